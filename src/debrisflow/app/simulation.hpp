@@ -1,0 +1,44 @@
+#pragma once
+#include "debrisflow/core/log.hpp"
+#include "debrisflow/io/case_spec.hpp"
+#include "debrisflow/io/summary.hpp"
+#include "debrisflow/probes/probe.hpp"
+#include "debrisflow/sph/sph_solver.hpp"
+#include "debrisflow/time/integrator.hpp"
+#include <memory>
+
+namespace debrisflow::app {
+
+struct RunOptions {
+    std::string out_dir;  // empty: no files (tests); probes still sample in memory
+    bool quiet = false;
+    int threads = 0;      // 0: OpenMP default
+};
+
+// A case assembled from its spec: particles, the SPH phase, the integrator, gates, probes
+// and output observers. Used by the CLI and by the tests.
+class Simulation {
+public:
+    explicit Simulation(io::CaseSpec spec);
+
+    // Runs to time.end. On instability the output so far is kept, summary.json is written with
+    // status "unstable", and the InstabilityError is rethrown.
+    io::RunReport run(const RunOptions& opt);
+
+    const io::CaseSpec& spec() const { return spec_; }
+    particles::ParticleSet& particles() { return set_; }
+    sph::SphSolver& solver() { return *solver_; }
+    const std::vector<std::unique_ptr<probes::Probe>>& probes() const { return probes_; }
+    probes::Probe& probe(const std::string& name);
+    // Memory held by particle data and neighbour lists, in bytes (estimate).
+    std::size_t memory_bytes() const;
+
+private:
+    io::CaseSpec spec_;
+    particles::ParticleSet set_;
+    std::unique_ptr<sph::SphSolver> solver_;
+    std::vector<std::unique_ptr<probes::Probe>> probes_;
+    Log log_;
+};
+
+} // namespace debrisflow::app

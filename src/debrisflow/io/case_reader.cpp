@@ -1,0 +1,225 @@
+#include "debrisflow/core/error.hpp"
+#include "debrisflow/io/case_spec.hpp"
+#include "debrisflow/io/config_table.hpp"
+#include "debrisflow/kernels/kernel.hpp"
+#include "debrisflow/sph/sph_models.hpp"
+#include <cmath>
+#include <filesystem>
+#include <fmt/format.h>
+#include <sstream>
+
+namespace debrisflow::io {
+
+namespace {
+
+ShapeSpec read_shape(const ConfigTable& t, int dim, const std::vector<std::string>& allowed) {
+    ShapeSpec s;
+    s.type = t.choice("shape", allowed);
+    if (s.type == "box" || s.type == "open_tank") {
+        s.min = t.vec3("min", dim);
+        s.max = t.vec3("max", dim);
+        for (int d = 0; d < 3; ++d) {
+            if (dim == 2 && d == 1) continue;
+            if (!(s.max[d] > s.min[d]))
+                t.fail("max", fmt::format("must exceed min in {} ({} <= {})", "xyz"[d], s.max[d],
+                                          s.min[d]));
+        }
+    } else if (s.type == "cylinder") {
+        s.center = t.vec3("center", dim);
+        s.radius = t.positive("radius");
+        if (dim == 3) {
+            s.axis = t.vec3("axis", dim, {0, 0, 1});
+            if (norm(s.axis) == 0) t.fail("axis", "must be a non-zero vector");
+            s.axis = (1 / norm(s.axis)) * s.axis;
+            s.length = t.positive("length");
+        }
+    } else if (s.type == "stl") {
+        std::string f = t.string("file");
+        std::filesystem::path p(f);
+        if (p.is_relative()) p = std::filesystem::path(t.file()).parent_path() / p;
+        if (!std::filesystem::exists(p)) t.fail("file", "mesh file not found: " + p.string());
+        s.file = p.string();
+        s.scale = t.positive("scale", 1);
+        s.offset = t.vec3("offset", dim, {});
+    }
+    return s;
+}
+
+void read_sph(const ConfigTable& t, CaseSpec& c) {
+    auto& p = c.sph;
+    p.dim = c.dim;
+    p.dp = c.dp;
+    p.kernel = t.choice("kernel", kernels::KernelRegistry::names(), "wendland_c2");
+    p.h = t.positive("h_over_dp", p.kernel == "cubic_spline" ? std::sqrt(3.0) : 1.5) * c.dp;
+    p.rho0 = t.positive("rho0", 1000);
+    p.gamma = t.positive("gamma", 7);
+    if (t.has("c0") && t.has("c0_coefficient"))
+        t.fail("c0", "give either c0 or c0_coefficient (with reference_depth), not both");
+    if (t.has("c0")) {
+        p.c0 = t.positive("c0");
+    } else {
+        c.c0_coefficient = t.positive("c0_coefficient");
+        c.reference_depth = t.positive("reference_depth");
+        p.c0 = c.c0_coefficient * std::sqrt(norm(p.gravity) * c.reference_depth);
+        if (!(p.c0 > 0)) t.fail("c0_coefficient", "gravity is zero; give c0 directly");
+    }
+    p.viscosity = t.choice("viscosity", sph::ViscosityRegistry::names(), "artificial");
+    if (p.viscosity == "artificial") {
+        p.alpha = t.real("alpha", 0.01);
+        if (p.alpha < 0) t.fail("alpha", "must be >= 0");
+        p.boundary_factor = t.real("boundary_factor", 1);
+        if (p.boundary_factor < 0) t.fail("boundary_factor", "must be >= 0");
+    } else {
+        p.nu = t.positive("nu");
+    }
+    p.diffusion = t.choice("diffusion", sph::DiffusionRegistry::names(), "fourtakas");
+    p.delta = t.real("delta", 0.1); // read for every model so sweeps may switch models
+    if (p.delta < 0 || p.delta > 1) t.fail("delta", "must be within [0, 1]");
+    p.cfl = t.positive("cfl", 0.2);
+    if (p.cfl > 1) t.fail("cfl", "must be <= 1");
+    p.reorder_every = int(t.integer("reorder_every", 1));
+    t.finish();
+}
+
+sph::Domain read_domain(const ConfigTable& t, int dim) {
+    sph::Domain d;
+    d.lo = t.vec3("min", dim);
+    d.hi = t.vec3("max", dim);
+    if (dim == 2) d.lo.y = d.hi.y = 0;
+    for (int k = 0; k < 3; ++k)
+        if (!(dim == 2 && k == 1) && !(d.hi[k] > d.lo[k]))
+            t.fail("max", fmt::format("must exceed min in {}", "xyz"[k]));
+    if (t.has("periodic")) {
+        for (const auto& s : t.strings("periodic")) {
+            if (s == "x") d.periodic[0] = true;
+            else if (s == "y" && dim == 3) d.periodic[1] = true;
+            else if (s == "z") d.periodic[2] = true;
+            else t.fail("periodic", "expected a list of \"x\", \"y\" (3D) or \"z\", got \"" + s + "\"");
+        }
+    }
+    t.finish();
+    return d;
+}
+
+ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
+    ProbeSpec p;
+    p.name = t.string("name");
+    p.type = t.choice("type", {"pressure", "gauge", "velocity", "front", "wall_force"});
+    p.every = t.positive("every", 0.001);
+    if (p.type == "pressure" || p.type == "velocity" || p.type == "gauge") {
+        p.position = t.vec3("position", c.dim);
+    } else if (p.type == "front") {
+        const std::string a = t.choice("axis", {"x", "y", "z"}, "x");
+        p.axis = a == "x" ? 0 : (a == "y" ? 1 : 2);
+    } else {
+        p.wall = t.string("wall");
+        bool found = false;
+        for (const auto& w : c.walls) found = found || w.name == p.wall;
+        if (!found) t.fail("wall", "no wall named \"" + p.wall + "\"");
+    }
+    t.finish();
+    return p;
+}
+
+} // namespace
+
+CaseSpec read_case(const std::string& path, const std::vector<std::string>& overrides) {
+    CaseSpec c;
+    c.file = path;
+    toml::table doc;
+    try {
+        doc = toml::parse_file(path);
+    } catch (const toml::parse_error& e) {
+        const auto& src = e.source();
+        if (!std::filesystem::exists(path)) throw InputError(path + ": file not found");
+        throw InputError(fmt::format("{}:{}:{}: {}", path, src.begin.line, src.begin.column,
+                                     e.description()));
+    }
+    for (const auto& o : overrides) apply_override(doc, o);
+    std::ostringstream resolved;
+    resolved << doc;
+    c.resolved_toml = resolved.str();
+
+    ConfigTable root(doc, path, "");
+    c.name = root.string("name", std::filesystem::path(path).stem().string());
+    c.dim = int(root.integer("dimensions", 2));
+    if (c.dim != 2 && c.dim != 3) root.fail("dimensions", "must be 2 or 3");
+    c.dp = root.positive("dp");
+
+    auto time = root.table("time");
+    if (!time) root.fail("time", "missing required table [time] with key 'end'");
+    c.t_end = time->positive("end");
+    time->finish();
+
+    auto output = root.table("output");
+    if (output) {
+        c.vtk = output->boolean("vtk", true);
+        c.vtk_every = output->real("vtk_every", 0);
+        if (c.vtk_every < 0) output->fail("vtk_every", "must be >= 0");
+        c.progress_seconds = output->positive("progress_seconds", 2);
+        output->finish();
+    }
+
+    auto physics = root.table("physics");
+    if (physics) {
+        c.sph.gravity = physics->vec3("gravity", c.dim, {0, 0, -9.81});
+        physics->finish();
+    }
+    if (c.dim == 2) c.sph.gravity.y = 0;
+
+    auto domain = root.table("domain");
+    if (!domain) root.fail("domain", "missing required table [domain] with min and max");
+    c.domain = read_domain(*domain, c.dim);
+
+    auto sph = root.table("sph");
+    if (!sph) root.fail("sph", "missing required table [sph]");
+    read_sph(*sph, c);
+
+    for (const auto& t : root.tables("fluid")) {
+        FluidSpec f;
+        f.name = t.string("name");
+        f.shape = read_shape(t, c.dim, {"box", "cylinder", "stl"});
+        f.velocity = t.vec3("velocity", c.dim, {});
+        f.hydrostatic = t.boolean("hydrostatic", true);
+        t.finish();
+        c.fluids.push_back(f);
+    }
+    if (c.fluids.empty()) root.fail("fluid", "a case needs at least one [[fluid]] block");
+
+    const Real support = 2 * c.sph.h;
+    for (const auto& t : root.tables("wall")) {
+        WallSpec w;
+        w.name = t.string("name");
+        for (const auto& o : c.walls)
+            if (o.name == w.name) t.fail("name", "two walls are named \"" + w.name + "\"");
+        w.type = t.choice("shape", {"box", "open_tank", "plane", "stl"});
+        if (w.type == "plane") {
+            w.point = t.vec3("point", c.dim);
+            w.normal = t.vec3("normal", c.dim);
+            if (c.dim == 2) w.normal.y = 0;
+            if (norm(w.normal) == 0) t.fail("normal", "must be a non-zero vector");
+            w.normal = (1 / norm(w.normal)) * w.normal;
+        } else {
+            w.shape = read_shape(t, c.dim, {"box", "open_tank", "stl"});
+        }
+        w.layers = int(t.integer("layers", long(std::ceil(support / c.dp - 1e-9))));
+        if (w.layers < 1) t.fail("layers", "must be >= 1");
+        if (t.has("remove_at")) {
+            w.remove_at = t.real("remove_at");
+            if (*w.remove_at < 0) t.fail("remove_at", "must be >= 0");
+        }
+        t.finish();
+        c.walls.push_back(w);
+    }
+
+    for (const auto& t : root.tables("probe")) {
+        c.probes.push_back(read_probe(t, c));
+        for (std::size_t i = 0; i + 1 < c.probes.size(); ++i)
+            if (c.probes[i].name == c.probes.back().name)
+                t.fail("name", "two probes are named \"" + c.probes.back().name + "\"");
+    }
+    root.finish();
+    return c;
+}
+
+} // namespace debrisflow::io

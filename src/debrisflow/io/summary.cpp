@@ -1,0 +1,69 @@
+#include "debrisflow/io/summary.hpp"
+#include <cmath>
+#include <fmt/format.h>
+#include <fstream>
+
+namespace debrisflow::io {
+
+namespace {
+std::string num(double v) { return std::isfinite(v) ? fmt::format("{:.9g}", v) : "null"; }
+std::string quoted(const std::string& s) {
+    std::string o = "\"";
+    for (char c : s) {
+        if (c == '"' || c == '\\') o += '\\';
+        if (c == '\n') {
+            o += "\\n";
+            continue;
+        }
+        o += c;
+    }
+    return o + "\"";
+}
+} // namespace
+
+void write_summary(const std::string& path, const CaseSpec& spec, const RunReport& r,
+                   const std::vector<std::unique_ptr<probes::Probe>>& probes) {
+    std::ofstream o(path);
+    const auto& res = r.result;
+    const long n = r.fluid + r.boundary;
+    const double pss = res.wall_seconds > 0 ? double(n) * double(res.steps) / res.wall_seconds : 0;
+    o << "{\n";
+    o << "  \"case\": " << quoted(spec.name) << ",\n";
+    o << "  \"status\": " << quoted(r.status) << ",\n";
+    if (!r.message.empty()) o << "  \"message\": " << quoted(r.message) << ",\n";
+    o << "  \"dimensions\": " << spec.dim << ",\n";
+    o << "  \"dp\": " << num(spec.dp) << ",\n";
+    o << fmt::format("  \"particles\": {{\"fluid\": {}, \"boundary\": {}, \"total\": {}}},\n",
+                     r.fluid, r.boundary, n);
+    o << "  \"steps\": " << res.steps << ",\n";
+    o << "  \"simulated_time\": " << num(res.t) << ",\n";
+    o << "  \"end_time\": " << num(spec.t_end) << ",\n";
+    o << "  \"initial_dt\": " << num(r.initial_dt.dt) << ",\n";
+    o << "  \"initial_dt_limiter\": " << quoted(r.initial_dt.limiter) << ",\n";
+    o << "  \"wall_seconds\": " << num(res.wall_seconds) << ",\n";
+    o << "  \"particle_steps_per_second\": " << num(pss) << ",\n";
+    o << "  \"threads\": " << r.threads << ",\n";
+    const auto& t = res.timings;
+    o << fmt::format("  \"timings\": {{\"neighbors\": {}, \"forces\": {}, \"integration\": {}, "
+                     "\"output\": {}}},\n",
+                     num(t.neighbors), num(t.forces), num(t.integration), num(t.output));
+    o << "  \"probes\": {";
+    for (std::size_t k = 0; k < probes.size(); ++k) {
+        const auto& p = *probes[k];
+        o << (k ? ",\n" : "\n") << "    " << quoted(p.name()) << ": {";
+        const auto cols = p.columns();
+        for (std::size_t c = 0; c < cols.size(); ++c) {
+            const bool any = p.has_samples();
+            o << (c ? ", " : "") << quoted(cols[c])
+              << fmt::format(": {{\"peak\": {}, \"peak_time\": {}, \"final\": {}}}",
+                             any ? num(p.peaks()[c]) : "null",
+                             any ? num(p.peak_time(c)) : "null",
+                             any ? num(p.finals()[c]) : "null");
+        }
+        o << "}";
+    }
+    o << (probes.empty() ? "}\n" : "\n  }\n");
+    o << "}\n";
+}
+
+} // namespace debrisflow::io

@@ -1,0 +1,24 @@
+#pragma once
+#include "debrisflow/io/case_spec.hpp"
+#include "debrisflow/probes/probe.hpp"
+#include "debrisflow/time/integrator.hpp"
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace debrisflow::io {
+
+struct RunReport {
+    std::string status = "completed"; // completed | unstable
+    std::string message;
+    long fluid = 0, boundary = 0;
+    int threads = 1;
+    time::RunResult result;
+    time::DtLimit initial_dt{0, ""};
+};
+
+// summary.json: counts, steps, times, throughput, timing breakdown and probe peaks/finals.
+void write_summary(const std::string& path, const CaseSpec& spec, const RunReport& report,
+                   const std::vector<std::unique_ptr<probes::Probe>>& probes);
+
+} // namespace debrisflow::io

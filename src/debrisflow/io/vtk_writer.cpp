@@ -1,0 +1,114 @@
+#include "debrisflow/io/vtk_writer.hpp"
+#include "debrisflow/core/error.hpp"
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+
+namespace debrisflow::io {
+
+namespace {
+
+struct Block {
+    std::string name, type;
+    int components;
+    std::vector<char> bytes;
+};
+
+template <class T> Block make_block(std::string name, std::string type, int comps,
+                                    const std::vector<T>& data) {
+    Block b{std::move(name), std::move(type), comps, {}};
+    b.bytes.resize(data.size() * sizeof(T));
+    std::memcpy(b.bytes.data(), data.data(), b.bytes.size());
+    return b;
+}
+
+} // namespace
+
+VtkSeries::VtkSeries(std::string dir, std::string base) : dir_(std::move(dir)), base_(std::move(base)) {
+    std::filesystem::create_directories(dir_);
+}
+
+void VtkSeries::write(const particles::ParticleSet& s, Real t) {
+    const std::size_t n = std::size_t(s.size());
+    std::vector<float> pos(3 * n), vel(3 * n), acc(3 * n), p(n), rho(n);
+    std::vector<std::int32_t> conn(n), offs(n), group(n);
+    std::vector<std::uint8_t> cell_types(n, 1), kind(s.kind);
+    std::vector<std::uint64_t> id(s.id);
+    for (std::size_t i = 0; i < n; ++i) {
+        pos[3 * i] = float(s.x[i]);
+        pos[3 * i + 1] = float(s.y[i]);
+        pos[3 * i + 2] = float(s.z[i]);
+        vel[3 * i] = float(s.vx[i]);
+        vel[3 * i + 1] = float(s.vy[i]);
+        vel[3 * i + 2] = float(s.vz[i]);
+        acc[3 * i] = float(s.ax[i]);
+        acc[3 * i + 1] = float(s.ay[i]);
+        acc[3 * i + 2] = float(s.az[i]);
+        p[i] = float(s.p[i]);
+        rho[i] = float(s.rho[i]);
+        conn[i] = std::int32_t(i);
+        offs[i] = std::int32_t(i + 1);
+        group[i] = s.group[i];
+    }
+    std::vector<Block> point_data;
+    point_data.push_back(make_block("velocity", "Float32", 3, vel));
+    point_data.push_back(make_block("acceleration", "Float32", 3, acc));
+    point_data.push_back(make_block("pressure", "Float32", 1, p));
+    point_data.push_back(make_block("density", "Float32", 1, rho));
+    point_data.push_back(make_block("type", "UInt8", 1, kind));
+    point_data.push_back(make_block("group", "Int32", 1, group));
+    point_data.push_back(make_block("id", "UInt64", 1, id));
+    Block points = make_block("points", "Float32", 3, pos);
+    std::vector<Block> cells;
+    cells.push_back(make_block("connectivity", "Int32", 1, conn));
+    cells.push_back(make_block("offsets", "Int32", 1, offs));
+    cells.push_back(make_block("types", "UInt8", 1, cell_types));
+
+    const std::string file = fmt::format("{}_{:05d}.vtu", base_, entries_.size());
+    std::ofstream out(dir_ + "/" + file, std::ios::binary);
+    if (!out) throw InputError("cannot write " + dir_ + "/" + file);
+    std::uint64_t offset = 0;
+    auto header = [&](const Block& b) {
+        std::string s = fmt::format("<DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" "
+                                    "format=\"appended\" offset=\"{}\"/>\n",
+                                    b.type, b.name, b.components, offset);
+        offset += sizeof(std::uint64_t) + b.bytes.size();
+        return s;
+    };
+    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
+           "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n<UnstructuredGrid>\n";
+    out << fmt::format("<FieldData><DataArray type=\"Float64\" Name=\"TimeValue\" "
+                       "NumberOfTuples=\"1\" format=\"ascii\">{:.9g}</DataArray></FieldData>\n",
+                       t);
+    out << fmt::format("<Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", n, n);
+    out << "<PointData Scalars=\"pressure\" Vectors=\"velocity\">\n";
+    for (const auto& b : point_data) out << header(b);
+    out << "</PointData>\n<Points>\n" << header(points) << "</Points>\n<Cells>\n";
+    for (const auto& b : cells) out << header(b);
+    out << "</Cells>\n</Piece>\n</UnstructuredGrid>\n<AppendedData encoding=\"raw\">\n_";
+    auto raw = [&](const Block& b) {
+        const std::uint64_t size = b.bytes.size();
+        out.write(reinterpret_cast<const char*>(&size), sizeof size);
+        out.write(b.bytes.data(), std::streamsize(b.bytes.size()));
+    };
+    for (const auto& b : point_data) raw(b);
+    raw(points);
+    for (const auto& b : cells) raw(b);
+    out << "\n</AppendedData>\n</VTKFile>\n";
+    entries_.emplace_back(t, file);
+    write_pvd();
+}
+
+void VtkSeries::write_pvd() const {
+    std::ofstream out(dir_ + "/" + base_ + ".pvd");
+    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" "
+           "byte_order=\"LittleEndian\">\n<Collection>\n";
+    for (const auto& [t, f] : entries_)
+        out << fmt::format("  <DataSet timestep=\"{:.9g}\" group=\"\" part=\"0\" file=\"{}\"/>\n",
+                           t, f);
+    out << "</Collection>\n</VTKFile>\n";
+}
+
+} // namespace debrisflow::io

@@ -1,0 +1,23 @@
+#pragma once
+#include "debrisflow/particles/particle_set.hpp"
+#include <string>
+#include <vector>
+
+namespace debrisflow::io {
+
+// Writes particle frames as VTK XML UnstructuredGrid (.vtu, raw appended binary) and keeps a
+// ParaView collection (.pvd) listing every frame with its time.
+class VtkSeries {
+public:
+    explicit VtkSeries(std::string dir, std::string base = "particles");
+    // Fields: velocity, acceleration, pressure, density, type (0 fluid, 1 boundary), group, id.
+    void write(const particles::ParticleSet& set, Real t);
+    int frames() const { return int(entries_.size()); }
+
+private:
+    void write_pvd() const;
+    std::string dir_, base_;
+    std::vector<std::pair<Real, std::string>> entries_;
+};
+
+} // namespace debrisflow::io

@@ -1,0 +1,49 @@
+#pragma once
+#include "debrisflow/core/hd.hpp"
+#include "debrisflow/sph/pair_state_k.hpp"
+#include <cmath>
+
+namespace debrisflow::models {
+
+using sph::PairState;
+
+// No density diffusion: plain continuity equation.
+struct NoDiffusion {
+    static constexpr const char* name = "none";
+    DF_HD Real drho(const PairState&) const { return 0; }
+};
+
+// delta-SPH density diffusion (Molteni & Colagrossi 2009; Antuono et al. 2010 eq. 6):
+// D_i = delta h c0 sum 2 (rho_j - rho_i) (x_j - x_i).grad_i W / |x_ij|^2 m_j / rho_j.
+struct MolteniColagrossi {
+    static constexpr const char* name = "molteni";
+    Real delta = 0.1, h = 0, c0 = 0, eta2 = 0;
+
+    DF_HD Real drho(const PairState& s) const {
+        // (x_j - x_i).grad_i W = -r^2 f
+        const Real psi = 2 * (s.rho_j - s.rho_i) * (-s.r2 * s.f) / (s.r2 + eta2);
+        return delta * h * c0 * psi * s.mass_j / s.rho_j;
+    }
+};
+
+// Density diffusion with the hydrostatic part removed (Fourtakas et al. 2019, eqs. 7-8):
+// as Molteni-Colagrossi with (rho_j - rho_i) replaced by (rho_j - rho_i) - (rho^H_j - rho^H_i),
+// rho^H_j - rho^H_i = rho0 [(1 + rho0 g.(x_j - x_i) / B)^(1/gamma) - 1], B = c0^2 rho0 / gamma.
+struct Fourtakas {
+    static constexpr const char* name = "fourtakas";
+    Real delta = 0.1, h = 0, c0 = 0, eta2 = 0;
+    Real rho0 = 1000, inv_gamma = 1.0 / 7, g_over_b[3] = {0, 0, 0}; // rho0 g / B
+
+    DF_HD Real drho(const PairState& s) const {
+        // g.(x_j - x_i) = -g.r
+        const Real gr = -(g_over_b[0] * s.r.x + g_over_b[1] * s.r.y + g_over_b[2] * s.r.z);
+        // (1 + x)^a - 1 by its Taylor series to third order: |x| <= 2 h gamma g / c0^2 << 1 for
+        // a pair, so the truncation (a (a-1)(a-2)(a-3)/24 x^4) is below 1e-9 relative.
+        const Real a = inv_gamma;
+        const Real hyd = rho0 * a * gr * (1 + Real(0.5) * (a - 1) * gr * (1 + (a - 2) / 3 * gr));
+        const Real psi = 2 * (s.rho_j - s.rho_i - hyd) * (-s.r2 * s.f) / (s.r2 + eta2);
+        return delta * h * c0 * psi * s.mass_j / s.rho_j;
+    }
+};
+
+} // namespace debrisflow::models

@@ -1,0 +1,28 @@
+#pragma once
+#include "debrisflow/neighbors/grid_view_k.hpp"
+#include <array>
+#include <vector>
+
+namespace debrisflow::neighbors {
+
+// Cell list over a box domain, rebuilt by counting sort. Cell edge >= search radius, so the
+// 3 x 3 (x 3) stencil finds every neighbour. In 2D (x-z plane) the y direction has one cell.
+class CellGrid {
+public:
+    void configure(Vec3 lo, Vec3 hi, Real radius, int dim, std::array<bool, 3> periodic);
+    // Sorts particles into cells; afterwards order() lists particle indices cell by cell.
+    void build(const Real* x, const Real* y, const Real* z, Index n);
+    GridView view() const;
+    const std::vector<Index>& order() const { return order_; }
+    int cell_count() const { return nc_[0] * nc_[1] * nc_[2]; }
+    Vec3 lo() const { return {view_.lo[0], view_.lo[1], view_.lo[2]}; }
+    Vec3 length() const { return {view_.length[0], view_.length[1], view_.length[2]}; }
+    bool periodic(int d) const { return view_.periodic[d] != 0; }
+
+private:
+    std::array<int, 3> nc_{1, 1, 1};
+    GridView view_{};
+    std::vector<Index> start_, order_, cell_of_, count_;
+};
+
+} // namespace debrisflow::neighbors

@@ -1,0 +1,91 @@
+#pragma once
+#include "debrisflow/core/hd.hpp"
+#include "debrisflow/core/real.hpp"
+#include "debrisflow/core/vec3_k.hpp"
+#include <type_traits>
+
+namespace debrisflow::neighbors {
+
+// Trivially copyable view of a cell grid built by counting sort. Particles of cell c are
+// order[start[c]] .. order[start[c+1]-1]; cells are numbered x fastest, so a run of cells
+// along x is one contiguous range. Periodic directions use the minimum-image convention.
+struct GridView {
+    const Index* start; // size ncells + 1
+    const Index* order; // sorted position -> particle index
+    int nc[3];
+    int periodic[3];
+    Real lo[3];
+    Real length[3]; // domain length per direction (used for periodic images)
+    Real inv_cell[3];
+    Real radius2; // squared search radius
+
+    DF_HD int cell_coord(Real v, int d) const {
+        int c = int((v - lo[d]) * inv_cell[d]);
+        if (c < 0) c = periodic[d] ? c % nc[d] + nc[d] : 0;
+        if (c >= nc[d]) c = periodic[d] ? c % nc[d] : nc[d] - 1;
+        return c;
+    }
+
+    // Separation xi - xj with periodic images folded in.
+    DF_HD Vec3 separation(Vec3 xi, Vec3 xj) const {
+        Vec3 r = xi - xj;
+        for (int d = 0; d < 3; ++d) {
+            if (!periodic[d]) continue;
+            const Real half = Real(0.5) * length[d];
+            if (r[d] > half) r[d] -= length[d];
+            else if (r[d] < -half) r[d] += length[d];
+        }
+        return r;
+    }
+
+    // Calls f(j, r_ij, r2) for every particle j != self with |xi - x_j| < search radius.
+    template <class F>
+    DF_HD void for_each_neighbor(Index self, Vec3 xi, const Real* px, const Real* py,
+                                 const Real* pz, F&& f) const {
+        const Positions pos{px, py, pz};
+        const int c0 = cell_coord(xi.x, 0), c1 = cell_coord(xi.y, 1), c2 = cell_coord(xi.z, 2);
+        const int r1 = nc[1] > 1 ? 1 : 0, r2 = nc[2] > 1 ? 1 : 0;
+        for (int dz = -r2; dz <= r2; ++dz) {
+            int cz = c2 + dz;
+            if (cz < 0 || cz >= nc[2]) {
+                if (!periodic[2]) continue;
+                cz = (cz + nc[2]) % nc[2];
+            }
+            for (int dy = -r1; dy <= r1; ++dy) {
+                int cy = c1 + dy;
+                if (cy < 0 || cy >= nc[1]) {
+                    if (!periodic[1]) continue;
+                    cy = (cy + nc[1]) % nc[1];
+                }
+                const int row = nc[0] * (cy + nc[1] * cz);
+                if (!periodic[0]) {
+                    const int xa = c0 > 0 ? c0 - 1 : 0;
+                    const int xb = c0 + 1 < nc[0] ? c0 + 1 : nc[0] - 1;
+                    visit_range(start[row + xa], start[row + xb + 1], self, xi, pos, f);
+                } else {
+                    for (int dx = -1; dx <= 1; ++dx) {
+                        const int cx = (c0 + dx + nc[0]) % nc[0];
+                        visit_range(start[row + cx], start[row + cx + 1], self, xi, pos, f);
+                    }
+                }
+            }
+        }
+    }
+
+private:
+    struct Positions {
+        const Real *x, *y, *z;
+    };
+    template <class F>
+    DF_HD void visit_range(Index a, Index b, Index self, Vec3 xi, Positions p, F& f) const {
+        for (Index k = a; k < b; ++k) {
+            const Index j = order[k];
+            const Vec3 r = separation(xi, {p.x[j], p.y[j], p.z[j]});
+            const Real r2 = dot(r, r);
+            if (r2 < radius2 && j != self) f(j, r, r2);
+        }
+    }
+};
+static_assert(std::is_trivially_copyable_v<GridView>);
+
+} // namespace debrisflow::neighbors

@@ -1,0 +1,68 @@
+#include "debrisflow/particles/particle_set.hpp"
+
+namespace debrisflow::particles {
+
+namespace {
+template <class Fn> void for_each_field(ParticleSet& s, Fn&& fn) {
+    for (auto* f : {&s.x, &s.y, &s.z, &s.vx, &s.vy, &s.vz, &s.ax, &s.ay, &s.az, &s.rho, &s.drho,
+                    &s.p, &s.mass})
+        fn(*f);
+    fn(s.kind);
+    fn(s.group);
+    fn(s.id);
+}
+} // namespace
+
+Index ParticleSet::count(Kind k) const {
+    Index c = 0;
+    for (auto v : kind) c += (v == std::uint8_t(k));
+    return c;
+}
+
+void ParticleSet::add(Vec3 pos, Vec3 vel, Real density, Real m, Kind k, std::int16_t grp) {
+    x.push_back(pos.x);
+    y.push_back(pos.y);
+    z.push_back(pos.z);
+    vx.push_back(vel.x);
+    vy.push_back(vel.y);
+    vz.push_back(vel.z);
+    ax.push_back(0);
+    ay.push_back(0);
+    az.push_back(0);
+    rho.push_back(density);
+    drho.push_back(0);
+    p.push_back(0);
+    mass.push_back(m);
+    kind.push_back(std::uint8_t(k));
+    group.push_back(grp);
+    id.push_back(next_id_++);
+}
+
+void ParticleSet::permute(const std::vector<Index>& perm) {
+    for_each_field(*this, [&](auto& field) {
+        using V = std::decay_t<decltype(field)>;
+        V out(field.size());
+        const Index n = Index(perm.size());
+#pragma omp parallel for schedule(static)
+        for (Index i = 0; i < n; ++i) out[i] = field[perm[i]];
+        field.swap(out);
+    });
+}
+
+void ParticleSet::compact(const std::vector<std::uint8_t>& keep) {
+    for_each_field(*this, [&](auto& field) {
+        std::size_t w = 0;
+        for (std::size_t i = 0; i < field.size(); ++i)
+            if (keep[i]) field[w++] = field[i];
+        field.resize(w);
+    });
+}
+
+ParticleView ParticleSet::view() {
+    return {x.data(),  y.data(),    z.data(),  vx.data(),    vy.data(),
+            vz.data(), ax.data(),   ay.data(), az.data(),    rho.data(),
+            drho.data(), p.data(),  mass.data(), kind.data(), group.data(),
+            size()};
+}
+
+} // namespace debrisflow::particles

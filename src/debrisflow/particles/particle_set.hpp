@@ -1,0 +1,54 @@
+#pragma once
+#include "debrisflow/core/real.hpp"
+#include "debrisflow/core/vec3_k.hpp"
+#include <cstdint>
+#include <type_traits>
+#include <vector>
+
+namespace debrisflow::particles {
+
+enum class Kind : std::uint8_t { fluid = 0, boundary = 1 };
+
+// Trivially copyable view of a ParticleSet: raw pointers only, usable in OpenMP and CUDA loops.
+struct ParticleView {
+    Real *x, *y, *z;
+    Real *vx, *vy, *vz;
+    Real *ax, *ay, *az;
+    Real *rho, *drho, *p, *mass;
+    std::uint8_t* kind;
+    std::int16_t* group;
+    Index n;
+
+    DF_HD Vec3 pos(Index i) const { return {x[i], y[i], z[i]}; }
+    DF_HD Vec3 vel(Index i) const { return {vx[i], vy[i], vz[i]}; }
+    DF_HD bool is_fluid(Index i) const { return kind[i] == std::uint8_t(Kind::fluid); }
+};
+static_assert(std::is_trivially_copyable_v<ParticleView>);
+
+// Structure-of-arrays SPH particle storage. `group` is the index of the fluid body or the
+// wall a particle was created from; `id` is persistent across reordering and removal.
+class ParticleSet {
+public:
+    std::vector<Real> x, y, z, vx, vy, vz, ax, ay, az, rho, drho, p, mass;
+    std::vector<std::uint8_t> kind;
+    std::vector<std::int16_t> group;
+    std::vector<ParticleId> id;
+
+    Index size() const { return Index(x.size()); }
+    Index count(Kind k) const;
+
+    void add(Vec3 pos, Vec3 vel, Real density, Real m, Kind k, std::int16_t grp);
+
+    // Applies new order: element i of the result is old element perm[i].
+    void permute(const std::vector<Index>& perm);
+
+    // Removes every particle for which keep[i] == 0 (order of the rest is preserved).
+    void compact(const std::vector<std::uint8_t>& keep);
+
+    ParticleView view();
+
+private:
+    ParticleId next_id_ = 0;
+};
+
+} // namespace debrisflow::particles

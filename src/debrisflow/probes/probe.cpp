@@ -1,0 +1,49 @@
+#include "debrisflow/probes/probe.hpp"
+#include "debrisflow/core/error.hpp"
+#include "debrisflow/probes/sph_probes.hpp"
+#include <filesystem>
+#include <fmt/format.h>
+
+namespace debrisflow::probes {
+
+void Probe::open(const std::string& dir) {
+    std::filesystem::create_directories(dir);
+    const std::string path = dir + "/" + name_ + ".csv";
+    csv_.open(path);
+    if (!csv_) throw InputError("cannot write probe file " + path);
+    csv_ << "time [s]";
+    for (const auto& c : columns()) csv_ << "," << c;
+    csv_ << "\n";
+}
+
+void Probe::record(Real t, const sph::SphSolver& solver) {
+    const auto v = sample(solver);
+    if (peak_.empty()) {
+        peak_ = v;
+        peak_t_.assign(v.size(), t);
+    }
+    for (std::size_t k = 0; k < v.size(); ++k)
+        if (v[k] > peak_[k]) {
+            peak_[k] = v[k];
+            peak_t_[k] = t;
+        }
+    last_ = v;
+    ++samples_;
+    if (csv_) {
+        csv_ << fmt::format("{:.9g}", t);
+        for (Real x : v) csv_ << fmt::format(",{:.9g}", x);
+        csv_ << "\n";
+    }
+}
+
+std::unique_ptr<Probe> make_probe(const io::ProbeSpec& s, const io::CaseSpec& c) {
+    if (s.type == "pressure") return std::make_unique<PressureProbe>(s);
+    if (s.type == "velocity") return std::make_unique<VelocityProbe>(s);
+    if (s.type == "gauge") return std::make_unique<GaugeProbe>(s, c);
+    if (s.type == "front") return std::make_unique<FrontProbe>(s);
+    for (std::size_t w = 0; w < c.walls.size(); ++w)
+        if (c.walls[w].name == s.wall) return std::make_unique<WallForceProbe>(s, int(w), c.dim);
+    throw InputError("probe '" + s.name + "': unknown wall '" + s.wall + "'");
+}
+
+} // namespace debrisflow::probes

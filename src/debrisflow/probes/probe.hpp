@@ -1,0 +1,42 @@
+#pragma once
+#include "debrisflow/io/case_spec.hpp"
+#include "debrisflow/sph/sph_solver.hpp"
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace debrisflow::probes {
+
+// A measurement taken on a schedule and written to probes/<name>.csv (first column time [s]).
+// Peak (largest value) and final value of every column go to summary.json.
+class Probe {
+public:
+    virtual ~Probe() = default;
+    const std::string& name() const { return name_; }
+    // Column headers with SI units, e.g. "p [Pa]".
+    virtual std::vector<std::string> columns() const = 0;
+    virtual std::vector<Real> sample(const sph::SphSolver& solver) const = 0;
+
+    Real every() const { return every_; }
+    void open(const std::string& dir);
+    void record(Real t, const sph::SphSolver& solver);
+    const std::vector<Real>& peaks() const { return peak_; }
+    const std::vector<Real>& finals() const { return last_; }
+    bool has_samples() const { return samples_ > 0; }
+    Real peak_time(std::size_t column) const { return peak_t_[column]; }
+
+protected:
+    Probe(std::string name, Real every) : name_(std::move(name)), every_(every) {}
+
+private:
+    std::string name_;
+    Real every_;
+    std::ofstream csv_;
+    std::vector<Real> peak_, peak_t_, last_;
+    long samples_ = 0;
+};
+
+std::unique_ptr<Probe> make_probe(const io::ProbeSpec& spec, const io::CaseSpec& c);
+
+} // namespace debrisflow::probes

@@ -1,0 +1,78 @@
+#include "debrisflow/probes/sph_probes.hpp"
+#include <cmath>
+#include <limits>
+
+namespace debrisflow::probes {
+
+PointSample interpolate(const sph::SphSolver& solver, Vec3 x) {
+    const auto& s = solver.particles();
+    const auto grid = solver.grid().view();
+    PointSample out;
+    std::visit(
+        [&](const auto& kernel) {
+            grid.for_each_neighbor(-1, x, s.x.data(), s.y.data(), s.z.data(),
+                                   [&](Index j, Vec3 r, Real r2) {
+                                       if (s.kind[j] != std::uint8_t(particles::Kind::fluid))
+                                           return;
+                                       const Real w = kernel.w(std::sqrt(r2)) * s.mass[j] / s.rho[j];
+                                       out.weight += w;
+                                       out.p += w * s.p[j];
+                                       out.rho += w * s.rho[j];
+                                       out.v += w * Vec3{s.vx[j], s.vy[j], s.vz[j]};
+                                       (void)r;
+                                   });
+        },
+        solver.models().kernel);
+    if (out.weight > 0) {
+        out.p /= out.weight;
+        out.rho /= out.weight;
+        out.v = (1 / out.weight) * out.v;
+    }
+    return out;
+}
+
+std::vector<Real> PressureProbe::sample(const sph::SphSolver& solver) const {
+    return {interpolate(solver, x_).p};
+}
+
+std::vector<Real> VelocityProbe::sample(const sph::SphSolver& solver) const {
+    const PointSample s = interpolate(solver, x_);
+    return {s.v.x, s.v.y, s.v.z, norm(s.v)};
+}
+
+std::vector<Real> GaugeProbe::sample(const sph::SphSolver& solver) const {
+    const auto& d = solver.domain();
+    bool wet = false;
+    Real prev_w = 0;
+    for (Real z = d.lo.z; z <= d.hi.z; z += dz_) {
+        const Real w = interpolate(solver, {x_.x, x_.y, z}).weight;
+        if (!wet && w >= 0.5) wet = true;
+        if (wet && w < 0.5) {
+            // linear interpolation of the 0.5 crossing between z - dz and z
+            const Real f = (prev_w - Real(0.5)) / (prev_w - w);
+            return {z - dz_ + f * dz_};
+        }
+        prev_w = w;
+    }
+    return {wet ? d.hi.z : d.lo.z};
+}
+
+std::vector<Real> FrontProbe::sample(const sph::SphSolver& solver) const {
+    const auto& s = solver.particles();
+    const std::vector<Real>& c = axis_ == 0 ? s.x : (axis_ == 1 ? s.y : s.z);
+    Real m = -std::numeric_limits<Real>::max();
+    for (Index i = 0; i < s.size(); ++i)
+        if (s.kind[i] == std::uint8_t(particles::Kind::fluid)) m = std::max(m, c[i]);
+    return {m};
+}
+
+std::vector<Real> WallForceProbe::sample(const sph::SphSolver& solver) const {
+    const auto& s = solver.particles();
+    Vec3 f;
+    for (Index i = 0; i < s.size(); ++i)
+        if (s.kind[i] == std::uint8_t(particles::Kind::boundary) && s.group[i] == group_)
+            f += s.mass[i] * Vec3{s.ax[i], s.ay[i], s.az[i]};
+    return {f.x, f.y, f.z, norm(f)};
+}
+
+} // namespace debrisflow::probes

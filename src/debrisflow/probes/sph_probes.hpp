@@ -1,0 +1,83 @@
+#pragma once
+#include "debrisflow/probes/probe.hpp"
+
+namespace debrisflow::probes {
+
+// Shepard-normalised kernel interpolation of fluid fields at a point:
+// f(x) = sum_j f_j W(x - x_j) m_j/rho_j / sum_j W(x - x_j) m_j/rho_j (fluid particles only).
+struct PointSample {
+    Real weight = 0; // sum_j W m_j / rho_j (1 inside the fluid, ~0.5 at the free surface)
+    Real p = 0, rho = 0;
+    Vec3 v;
+};
+PointSample interpolate(const sph::SphSolver& solver, Vec3 x);
+
+// Pressure at a point, as a wall-mounted sensor measures it.
+class PressureProbe : public Probe {
+public:
+    explicit PressureProbe(const io::ProbeSpec& s) : Probe(s.name, s.every), x_(s.position) {}
+    std::vector<std::string> columns() const override { return {"p [Pa]"}; }
+    std::vector<Real> sample(const sph::SphSolver& solver) const override;
+
+private:
+    Vec3 x_;
+};
+
+// Fluid velocity at a point.
+class VelocityProbe : public Probe {
+public:
+    explicit VelocityProbe(const io::ProbeSpec& s) : Probe(s.name, s.every), x_(s.position) {}
+    std::vector<std::string> columns() const override {
+        return {"vx [m/s]", "vy [m/s]", "vz [m/s]", "speed [m/s]"};
+    }
+    std::vector<Real> sample(const sph::SphSolver& solver) const override;
+
+private:
+    Vec3 x_;
+};
+
+// Free-surface elevation at (x, y): scanning upward from the domain floor, the first height
+// where the kernel-sum weight falls below 0.5 (as a wave gauge sees the water column).
+class GaugeProbe : public Probe {
+public:
+    GaugeProbe(const io::ProbeSpec& s, const io::CaseSpec& c)
+        : Probe(s.name, s.every), x_(s.position), dz_(Real(0.25) * c.dp) {}
+    std::vector<std::string> columns() const override { return {"elevation [m]"}; }
+    std::vector<Real> sample(const sph::SphSolver& solver) const override;
+
+private:
+    Vec3 x_;
+    Real dz_;
+};
+
+// Surge-front position: the largest coordinate of any fluid particle along an axis.
+class FrontProbe : public Probe {
+public:
+    explicit FrontProbe(const io::ProbeSpec& s) : Probe(s.name, s.every), axis_(s.axis) {}
+    std::vector<std::string> columns() const override {
+        return {std::string(1, "xyz"[axis_]) + "_front [m]"};
+    }
+    std::vector<Real> sample(const sph::SphSolver& solver) const override;
+
+private:
+    int axis_;
+};
+
+// Total force of the fluid on a named wall: sum over its boundary particles of m_i a_i.
+// In 2D the force is per metre of width (N/m).
+class WallForceProbe : public Probe {
+public:
+    WallForceProbe(const io::ProbeSpec& s, int group, int dim)
+        : Probe(s.name, s.every), group_(group), unit_(dim == 2 ? "N/m" : "N") {}
+    std::vector<std::string> columns() const override {
+        return {"Fx [" + unit_ + "]", "Fy [" + unit_ + "]", "Fz [" + unit_ + "]",
+                "|F| [" + unit_ + "]"};
+    }
+    std::vector<Real> sample(const sph::SphSolver& solver) const override;
+
+private:
+    int group_;
+    std::string unit_;
+};
+
+} // namespace debrisflow::probes

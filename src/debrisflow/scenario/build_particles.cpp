@@ -1,0 +1,175 @@
+#include "debrisflow/scenario/build_particles.hpp"
+#include "debrisflow/core/error.hpp"
+#include "debrisflow/models/eos_tait_k.hpp"
+#include "debrisflow/scenario/lattice.hpp"
+#include "debrisflow/scenario/stl_mesh.hpp"
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+#include <string>
+#include <unordered_map>
+
+namespace debrisflow::scenario {
+
+namespace {
+
+bool inside_cylinder(const io::ShapeSpec& s, int dim, Vec3 p) {
+    const Vec3 r = p - s.center;
+    if (dim == 2) return r.x * r.x + r.z * r.z <= s.radius * s.radius;
+    const Real along = dot(r, s.axis);
+    if (along < 0 || along > s.length) return false;
+    const Vec3 radial = r - along * s.axis;
+    return dot(radial, radial) <= s.radius * s.radius;
+}
+
+std::vector<Vec3> fill_shape(const io::ShapeSpec& s, Real dp, int dim) {
+    if (s.type == "box") return lattice(s.min, s.max, s.min, dp, dim, [](Vec3) { return true; });
+    if (s.type == "cylinder") {
+        Vec3 lo, hi;
+        for (int d = 0; d < 3; ++d) {
+            const Real ext = s.radius + (dim == 3 ? s.length * std::abs(s.axis[d]) : 0);
+            lo[d] = s.center[d] - ext;
+            hi[d] = s.center[d] + ext;
+        }
+        return lattice(lo, hi, {}, dp, dim, [&](Vec3 p) { return inside_cylinder(s, dim, p); });
+    }
+    const TriangleMesh mesh = TriangleMesh::read_stl(s.file, s.scale, s.offset);
+    Vec3 lo, hi;
+    mesh.bounds(lo, hi);
+    return lattice(lo, hi, {}, dp, dim, [&](Vec3 p) { return mesh.contains(p); });
+}
+
+// Surface samples of a mesh with `layers` layers behind it (opposite to the normals).
+std::vector<Vec3> mesh_wall(const io::ShapeSpec& s, Real dp, int layers) {
+    const TriangleMesh mesh = TriangleMesh::read_stl(s.file, s.scale, s.offset);
+    std::vector<Vec3> raw;
+    for (const auto& t : mesh.triangles) {
+        const Vec3 n = t.normal();
+        const Vec3 e1 = t.b - t.a, e2 = t.c - t.a;
+        const int n1 = std::max(1, int(std::ceil(norm(e1) / dp)));
+        const int n2 = std::max(1, int(std::ceil(norm(e2) / dp)));
+        for (int i = 0; i <= n1; ++i)
+            for (int j = 0; j <= n2; ++j) {
+                const Real u = Real(i) / n1, v = Real(j) / n2;
+                if (u + v > 1 + 1e-9) continue;
+                const Vec3 p = t.a + u * e1 + v * e2;
+                for (int k = 0; k < layers; ++k) raw.push_back(p - ((k + 0.5) * dp) * n);
+            }
+    }
+    // Thin the samples to about one per 0.8 dp (greedy, hashed by cell).
+    const Real gap = Real(0.8) * dp;
+    auto cell = [&](Vec3 p, int dx, int dy, int dz) {
+        return std::to_string(long(std::floor(p.x / gap)) + dx) + "," +
+               std::to_string(long(std::floor(p.y / gap)) + dy) + "," +
+               std::to_string(long(std::floor(p.z / gap)) + dz);
+    };
+    std::unordered_map<std::string, std::vector<Vec3>> hash;
+    std::vector<Vec3> out;
+    for (const Vec3& p : raw) {
+        bool near = false;
+        for (int dz = -1; dz <= 1 && !near; ++dz)
+            for (int dy = -1; dy <= 1 && !near; ++dy)
+                for (int dx = -1; dx <= 1 && !near; ++dx) {
+                    auto it = hash.find(cell(p, dx, dy, dz));
+                    if (it == hash.end()) continue;
+                    for (const Vec3& q : it->second)
+                        if (dot(q - p, q - p) < gap * gap) near = true;
+                }
+        if (near) continue;
+        out.push_back(p);
+        hash[cell(p, 0, 0, 0)].push_back(p);
+    }
+    return out;
+}
+
+std::vector<Vec3> build_wall(const io::WallSpec& w, const io::CaseSpec& c) {
+    const Real dp = c.dp;
+    if (w.type == "open_tank")
+        return tank_walls(w.shape.min, w.shape.max, dp, c.dim, w.layers, false);
+    if (w.type == "box") {
+        const Real skin = w.layers * dp;
+        return lattice(w.shape.min, w.shape.max, w.shape.min, dp, c.dim, [&](Vec3 p) {
+            Real depth = std::numeric_limits<Real>::max();
+            for (int d = 0; d < 3; ++d) {
+                if (c.dim == 2 && d == 1) continue;
+                depth = std::min({depth, p[d] - w.shape.min[d], w.shape.max[d] - p[d]});
+            }
+            return depth < skin;
+        });
+    }
+    if (w.type == "plane") {
+        const Real thick = w.layers * dp;
+        return lattice(c.domain.lo, c.domain.hi, w.point, dp, c.dim, [&](Vec3 p) {
+            const Real s = dot(p - w.point, w.normal);
+            return s < 0 && s >= -thick;
+        });
+    }
+    // For mesh walls, a 2D case uses the mesh's section y = 0 only: not supported.
+    if (c.dim == 2) throw InputError(c.file + ": wall '" + w.name + "': STL walls need a 3D case");
+    return mesh_wall(w.shape, dp, w.layers);
+}
+
+} // namespace
+
+void build_particles(const io::CaseSpec& c, particles::ParticleSet& set) {
+    const auto& sph = c.sph;
+    const Real mass = sph.rho0 * std::pow(c.dp, c.dim); // 2D: per metre of thickness
+    const models::TaitEos eos(sph.rho0, sph.c0, sph.gamma);
+    std::vector<Vec3> boundary;
+    std::vector<std::vector<Vec3>> walls;
+    for (const auto& w : c.walls) {
+        walls.push_back(build_wall(w, c));
+        if (walls.back().empty())
+            throw InputError(fmt::format("{}: wall '{}' produced no particles (check its extent "
+                                         "against dp = {} m)",
+                                         c.file, w.name, c.dp));
+        boundary.insert(boundary.end(), walls.back().begin(), walls.back().end());
+    }
+    const Real g = norm(sph.gravity);
+    const Vec3 down = g > 0 ? (1 / g) * sph.gravity : Vec3{0, 0, -1};
+    struct Column {
+        Vec3 lo, hi;
+        Real top;
+    };
+    std::vector<Column> columns;
+    for (std::size_t f = 0; f < c.fluids.size(); ++f) {
+        const auto& fl = c.fluids[f];
+        auto pts = remove_near(fill_shape(fl.shape, c.dp, c.dim), boundary, Real(0.75) * c.dp);
+        if (pts.empty())
+            throw InputError(fmt::format("{}: fluid '{}' produced no particles (shape smaller than "
+                                         "dp = {} m, or entirely inside a wall)",
+                                         c.file, fl.name, c.dp));
+        Real top = -std::numeric_limits<Real>::max(); // highest point against gravity
+        for (const Vec3& p : pts) top = std::max(top, -dot(p, down));
+        top += Real(0.5) * c.dp;
+        if (fl.hydrostatic && g > 0) {
+            Column col{pts[0], pts[0], top};
+            for (const Vec3& p : pts)
+                for (int d = 0; d < 3; ++d) {
+                    col.lo[d] = std::min(col.lo[d], p[d]);
+                    col.hi[d] = std::max(col.hi[d], p[d]);
+                }
+            columns.push_back(col);
+        }
+        for (const Vec3& p : pts) {
+            Real rho = sph.rho0;
+            if (fl.hydrostatic && g > 0) rho = eos.density(sph.rho0 * g * (top + dot(p, down)));
+            set.add(p, fl.velocity, rho, mass, particles::Kind::fluid, std::int16_t(f));
+        }
+    }
+    // Boundary particles under a hydrostatic column start with that column's pressure
+    // (within the column's plan extent), so the fluid does not sink at the first step.
+    const Real reach = 2 * sph.h;
+    for (std::size_t w = 0; w < walls.size(); ++w)
+        for (const Vec3& p : walls[w]) {
+            Real pressure = 0;
+            for (const auto& col : columns)
+                if (p.x >= col.lo.x - reach && p.x <= col.hi.x + reach && p.y >= col.lo.y - reach &&
+                    p.y <= col.hi.y + reach && col.top + dot(p, down) > 0)
+                    pressure = std::max(pressure, sph.rho0 * g * (col.top + dot(p, down)));
+            set.add(p, {}, eos.density(pressure), mass, particles::Kind::boundary,
+                    std::int16_t(w));
+        }
+}
+
+} // namespace debrisflow::scenario

@@ -1,0 +1,106 @@
+#include "debrisflow/scenario/stl_mesh.hpp"
+#include "debrisflow/core/error.hpp"
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace debrisflow::scenario {
+
+Vec3 Triangle::normal() const {
+    Vec3 n = cross(b - a, c - a);
+    const Real l = norm(n);
+    return l > 0 ? (1 / l) * n : n;
+}
+
+namespace {
+
+bool read_binary(const std::string& bytes, std::vector<Triangle>& out, Real s, Vec3 o) {
+    if (bytes.size() < 84) return false;
+    std::uint32_t n = 0;
+    std::memcpy(&n, bytes.data() + 80, 4);
+    if (bytes.size() != 84 + std::size_t(n) * 50) return false;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        float v[12];
+        std::memcpy(v, bytes.data() + 84 + std::size_t(i) * 50, sizeof v);
+        auto pt = [&](int k) { return Vec3{s * v[k], s * v[k + 1], s * v[k + 2]} + o; };
+        out.push_back({pt(3), pt(6), pt(9)});
+    }
+    return true;
+}
+
+void read_ascii(const std::string& path, const std::string& text, std::vector<Triangle>& out,
+                Real s, Vec3 o) {
+    std::istringstream in(text);
+    std::string word;
+    std::vector<Vec3> verts;
+    long line_hint = 0;
+    while (in >> word) {
+        if (word == "vertex") {
+            Vec3 v;
+            if (!(in >> v.x >> v.y >> v.z))
+                throw InputError(path + ": malformed 'vertex' line in ASCII STL (facet " +
+                                 std::to_string(line_hint) + ")");
+            verts.push_back(s * v + o);
+        } else if (word == "endfacet") {
+            if (verts.size() != 3)
+                throw InputError(path + ": facet " + std::to_string(line_hint) +
+                                 " does not have three vertices");
+            out.push_back({verts[0], verts[1], verts[2]});
+            verts.clear();
+            ++line_hint;
+        }
+    }
+}
+
+} // namespace
+
+TriangleMesh TriangleMesh::read_stl(const std::string& path, Real scale, Vec3 offset) {
+    std::ifstream f(path, std::ios::binary);
+    if (!f) throw InputError(path + ": cannot open mesh file");
+    std::string bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    TriangleMesh m;
+    if (!read_binary(bytes, m.triangles, scale, offset)) {
+        if (bytes.rfind("solid", 0) != 0)
+            throw InputError(path + ": neither a binary STL nor an ASCII STL ('solid ...')");
+        read_ascii(path, bytes, m.triangles, scale, offset);
+    }
+    if (m.triangles.empty()) throw InputError(path + ": mesh has no triangles");
+    return m;
+}
+
+void TriangleMesh::bounds(Vec3& lo, Vec3& hi) const {
+    const Real big = std::numeric_limits<Real>::max();
+    lo = {big, big, big};
+    hi = {-big, -big, -big};
+    for (const auto& t : triangles)
+        for (const Vec3& v : {t.a, t.b, t.c})
+            for (int d = 0; d < 3; ++d) {
+                lo[d] = std::min(lo[d], v[d]);
+                hi[d] = std::max(hi[d], v[d]);
+            }
+}
+
+bool TriangleMesh::contains(Vec3 p) const {
+    // Moller-Trumbore ray casting along a slightly skewed direction (avoids edge hits).
+    const Vec3 dir{0.5773, 0.5774, 0.5775};
+    int hits = 0;
+    for (const auto& t : triangles) {
+        const Vec3 e1 = t.b - t.a, e2 = t.c - t.a;
+        const Vec3 pv = cross(dir, e2);
+        const Real det = dot(e1, pv);
+        if (std::abs(det) < 1e-14) continue;
+        const Real inv = 1 / det;
+        const Vec3 tv = p - t.a;
+        const Real u = dot(tv, pv) * inv;
+        if (u < 0 || u > 1) continue;
+        const Vec3 qv = cross(tv, e1);
+        const Real v = dot(dir, qv) * inv;
+        if (v < 0 || u + v > 1) continue;
+        if (dot(e2, qv) * inv > 0) ++hits;
+    }
+    return hits % 2 == 1;
+}
+
+} // namespace debrisflow::scenario

@@ -1,0 +1,116 @@
+#pragma once
+#include "debrisflow/models/eos_tait_k.hpp"
+#include "debrisflow/neighbors/grid_view_k.hpp"
+#include "debrisflow/particles/particle_set.hpp"
+#include "debrisflow/sph/pair_state_k.hpp"
+
+namespace debrisflow::sph {
+
+// WCSPH particle-i update (host/device): continuity (Monaghan 1992 eq. 2.3)
+//   drho_i/dt = sum m_j v_ij . grad W_ij + density diffusion,
+// momentum (Monaghan 1992 eq. 3.1)
+//   dv_i/dt = -sum m_j (p_i/rho_i^2 + p_j/rho_j^2) grad W_ij + viscous terms + g.
+// Boundary (DBC, Crespo et al. 2007) particles get drho from fluid neighbours and the
+// acceleration exerted on them by the fluid (used for wall loads); they do not move.
+template <class Kernel, class Viscosity, class Diffusion> struct FluidInteraction {
+    particles::ParticleView pv;
+    neighbors::GridView grid;
+    Kernel kernel;
+    Viscosity visc;
+    Diffusion diff;
+    models::TaitEos eos;
+    Vec3 gravity;
+    const Real* tau; // SPS stress / rho^2, 6 per particle (xx, xy, xz, yy, yz, zz), or nullptr
+
+    DF_HD void operator()(Index i) const {
+        const Vec3 xi = pv.pos(i), vi = pv.vel(i);
+        const Real rho_i = pv.rho[i], p_i = pv.p[i];
+        const Real prho_i = p_i / (rho_i * rho_i);
+        const Real c_i = eos.sound_speed(rho_i);
+        const bool fluid_i = pv.is_fluid(i);
+        Vec3 acc{};
+        Real drho = 0;
+        grid.for_each_neighbor(i, xi, pv.x, pv.y, pv.z, [&](Index j, Vec3 r, Real r2) {
+            const bool fluid_j = pv.is_fluid(j);
+            if (!fluid_i && !fluid_j) return;
+            PairState s;
+            s.r = r;
+            s.r2 = r2;
+            s.f = kernel.grad_over_r(std::sqrt(r2));
+            s.grad_w = s.f * r;
+            s.v = vi - pv.vel(j);
+            s.mass_j = pv.mass[j];
+            s.rho_i = rho_i;
+            s.rho_j = pv.rho[j];
+            s.c_i = c_i;
+            s.c_j = eos.sound_speed(s.rho_j);
+            s.boundary_j = !(fluid_i && fluid_j);
+            drho += s.mass_j * dot(s.v, s.grad_w);
+            const Real prho_j = pv.p[j] / (s.rho_j * s.rho_j);
+            acc -= (s.mass_j * (prho_i + prho_j)) * s.grad_w;
+            acc += visc.acceleration(s);
+            if (fluid_i && fluid_j) drho += diff.drho(s);
+            if (tau) acc += s.mass_j * tau_dot(i, j, s.grad_w);
+        });
+        if (fluid_i) acc += gravity;
+        pv.ax[i] = acc.x;
+        pv.ay[i] = acc.y;
+        pv.az[i] = acc.z;
+        pv.drho[i] = drho;
+    }
+
+    // (tau_i + tau_j) . g
+    DF_HD Vec3 tau_dot(Index i, Index j, Vec3 g) const {
+        const Real* a = tau + 6 * i;
+        const Real* b = tau + 6 * j;
+        const Real xx = a[0] + b[0], xy = a[1] + b[1], xz = a[2] + b[2];
+        const Real yy = a[3] + b[3], yz = a[4] + b[4], zz = a[5] + b[5];
+        return {xx * g.x + xy * g.y + xz * g.z, xy * g.x + yy * g.y + yz * g.z,
+                xz * g.x + yz * g.y + zz * g.z};
+    }
+};
+
+// SPS stress of fluid particle i (Dalrymple & Rogers 2006, eq. 11) from the SPH velocity
+// gradient grad v_i = sum m_j / rho_j (v_j - v_i) (x) grad W_ij. Writes tau / rho^2.
+template <class Kernel> struct SpsStress {
+    particles::ParticleView pv;
+    neighbors::GridView grid;
+    Kernel kernel;
+    Real smag;  // (C_s dp)^2
+    Real blin;  // 2/3 C_I dp^2
+    Real* tau;
+
+    DF_HD void operator()(Index i) const {
+        Real* t = tau + 6 * i;
+        for (int k = 0; k < 6; ++k) t[k] = 0;
+        if (!pv.is_fluid(i)) return;
+        const Vec3 xi = pv.pos(i), vi = pv.vel(i);
+        Real g[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+        grid.for_each_neighbor(i, xi, pv.x, pv.y, pv.z, [&](Index j, Vec3 r, Real r2) {
+            const Vec3 gw = kernel.grad_over_r(std::sqrt(r2)) * r;
+            const Vec3 dv = pv.vel(j) - vi;
+            const Real vol = pv.mass[j] / pv.rho[j];
+            for (int a = 0; a < 3; ++a)
+                for (int b = 0; b < 3; ++b) g[a][b] += vol * dv[a] * gw[b];
+        });
+        // S_ab = (g_ab + g_ba)/2 ; |S| = sqrt(2 S:S)
+        const Real sxx = g[0][0], syy = g[1][1], szz = g[2][2];
+        const Real sxy = Real(0.5) * (g[0][1] + g[1][0]);
+        const Real sxz = Real(0.5) * (g[0][2] + g[2][0]);
+        const Real syz = Real(0.5) * (g[1][2] + g[2][1]);
+        const Real ss = 2 * (sxx * sxx + syy * syy + szz * szz) +
+                        4 * (sxy * sxy + sxz * sxz + syz * syz);
+        const Real nu_t = smag * std::sqrt(ss);
+        const Real div = sxx + syy + szz;
+        const Real iso = -(Real(2) / 3) * nu_t * div - blin * ss;
+        const Real inv_rho = 1 / pv.rho[i];
+        t[0] = inv_rho * (2 * nu_t * sxx + iso);
+        t[1] = inv_rho * (2 * nu_t * sxy);
+        t[2] = inv_rho * (2 * nu_t * sxz);
+        t[3] = inv_rho * (2 * nu_t * syy + iso);
+        t[4] = inv_rho * (2 * nu_t * syz);
+        t[5] = inv_rho * (2 * nu_t * szz + iso);
+    }
+};
+
+} // namespace debrisflow::sph

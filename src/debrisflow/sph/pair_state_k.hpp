@@ -1,0 +1,19 @@
+#pragma once
+#include "debrisflow/core/vec3_k.hpp"
+
+namespace debrisflow::sph {
+
+// Everything a per-pair SPH term needs about particles i and j (r = x_i - x_j, v = v_i - v_j).
+struct PairState {
+    Vec3 r;
+    Real r2;
+    Vec3 v;
+    Vec3 grad_w;    // grad_i W_ij
+    Real f;         // (dW/dr)/r, so grad_w = r * f
+    Real mass_j;
+    Real rho_i, rho_j;
+    Real c_i, c_j;
+    bool boundary_j; // j is a boundary particle
+};
+
+} // namespace debrisflow::sph

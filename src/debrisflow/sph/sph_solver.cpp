@@ -1,0 +1,221 @@
+#include "debrisflow/sph/sph_solver.hpp"
+#include "debrisflow/core/error.hpp"
+#include "debrisflow/core/stopwatch.hpp"
+#include "debrisflow/exec/parallel.hpp"
+#include "debrisflow/sph/interaction_k.hpp"
+#include <cmath>
+#include <fmt/format.h>
+#include <numeric>
+
+namespace debrisflow::sph {
+
+using particles::Kind;
+
+SphSolver::SphSolver(const SphParams& params, particles::ParticleSet& set, const Domain& domain)
+    : params_(params), set_(set), domain_(domain),
+      eos_(params.rho0, params.c0, params.gamma), models_(SphModels::from_params(params)) {
+    const Real support = std::visit([](const auto& k) { return k.support(); }, models_.kernel);
+    grid_.configure(domain.lo, domain.hi, support, params.dim, domain.periodic);
+}
+
+void SphSolver::update_neighbors(bool reorder) {
+    ScopedTimer timer(t_neighbors_);
+    grid_.build(set_.x.data(), set_.y.data(), set_.z.data(), set_.size());
+    if (reorder) {
+        set_.permute(grid_.order());
+        grid_.build(set_.x.data(), set_.y.data(), set_.z.data(), set_.size());
+    }
+}
+
+void SphSolver::update_pressure() {
+    auto pv = set_.view();
+    const auto eos = eos_;
+    exec::for_each(pv.n, [=](Index i) { pv.p[i] = eos.pressure(pv.rho[i]); });
+}
+
+void SphSolver::compute_forces() {
+    ScopedTimer timer(t_forces_);
+    update_pressure();
+    auto pv = set_.view();
+    const auto gv = grid_.view();
+    const bool sps = std::holds_alternative<models::LaminarSpsViscosity>(models_.viscosity);
+    if (sps) {
+        tau_.resize(6 * std::size_t(pv.n));
+        const auto& v = std::get<models::LaminarSpsViscosity>(models_.viscosity);
+        std::visit(
+            [&](const auto& kernel) {
+                using K = std::decay_t<decltype(kernel)>;
+                const Real dp2 = params_.dp * params_.dp;
+                SpsStress<K> f{pv,
+                               gv,
+                               kernel,
+                               v.smagorinsky * v.smagorinsky * dp2,
+                               Real(2) / 3 * v.blin * dp2,
+                               tau_.data()};
+                exec::for_each(pv.n, f);
+            },
+            models_.kernel);
+    }
+    std::visit(
+        [&](const auto& kernel, const auto& visc, const auto& diff) {
+            using K = std::decay_t<decltype(kernel)>;
+            using V = std::decay_t<decltype(visc)>;
+            using D = std::decay_t<decltype(diff)>;
+            FluidInteraction<K, V, D> f{pv,  gv,   kernel,          visc,
+                                        diff, eos_, params_.gravity, sps ? tau_.data() : nullptr};
+            exec::for_each(pv.n, f);
+        },
+        models_.kernel, models_.viscosity, models_.diffusion);
+}
+
+namespace {
+// Folds a coordinate back into a periodic direction.
+DF_HD inline Real wrap(Real v, Real lo, Real hi) {
+    const Real len = hi - lo;
+    if (v >= hi) v -= len;
+    else if (v < lo) v += len;
+    return v;
+}
+} // namespace
+
+void SphSolver::predictor(Real dt) {
+    ScopedTimer timer(t_integrate_);
+    const Index n = set_.size();
+    for (auto* v : {&x0_, &y0_, &z0_, &vx0_, &vy0_, &vz0_, &rho0_}) v->resize(n);
+    auto pv = set_.view();
+    Real *x0 = x0_.data(), *y0 = y0_.data(), *z0 = z0_.data();
+    Real *vx0 = vx0_.data(), *vy0 = vy0_.data(), *vz0 = vz0_.data(), *r0 = rho0_.data();
+    const Real hdt = Real(0.5) * dt, rho_ref = params_.rho0;
+    const Domain d = domain_;
+    exec::for_each(n, [=](Index i) {
+        x0[i] = pv.x[i], y0[i] = pv.y[i], z0[i] = pv.z[i];
+        vx0[i] = pv.vx[i], vy0[i] = pv.vy[i], vz0[i] = pv.vz[i];
+        r0[i] = pv.rho[i];
+        pv.rho[i] += hdt * pv.drho[i];
+        if (!pv.is_fluid(i)) {
+            if (pv.rho[i] < rho_ref) pv.rho[i] = rho_ref; // DBC: never below rho0
+            return;
+        }
+        Real* xs[3] = {pv.x, pv.y, pv.z};
+        const Real vs[3] = {pv.vx[i], pv.vy[i], pv.vz[i]};
+        for (int k = 0; k < 3; ++k) {
+            const Real v = xs[k][i] + hdt * vs[k];
+            xs[k][i] = d.periodic[k] ? wrap(v, d.lo[k], d.hi[k]) : v;
+        }
+        pv.vx[i] += hdt * pv.ax[i];
+        pv.vy[i] += hdt * pv.ay[i];
+        pv.vz[i] += hdt * pv.az[i];
+    });
+}
+
+void SphSolver::corrector(Real dt) {
+    ScopedTimer timer(t_integrate_);
+    auto pv = set_.view();
+    const Real *x0 = x0_.data(), *y0 = y0_.data(), *z0 = z0_.data();
+    const Real *vx0 = vx0_.data(), *vy0 = vy0_.data(), *vz0 = vz0_.data(), *r0 = rho0_.data();
+    const Real rho_ref = params_.rho0;
+    const Domain d = domain_;
+    exec::for_each(pv.n, [=](Index i) {
+        const Real eps = -dt * pv.drho[i] / pv.rho[i];
+        pv.rho[i] = r0[i] * (2 - eps) / (2 + eps);
+        if (!pv.is_fluid(i)) {
+            if (pv.rho[i] < rho_ref) pv.rho[i] = rho_ref;
+            return;
+        }
+        const Real vn[3] = {vx0[i], vy0[i], vz0[i]};
+        const Real xn[3] = {x0[i], y0[i], z0[i]};
+        Real* vs[3] = {pv.vx, pv.vy, pv.vz};
+        Real* xs[3] = {pv.x, pv.y, pv.z};
+        const Real as[3] = {pv.ax[i], pv.ay[i], pv.az[i]};
+        for (int k = 0; k < 3; ++k) {
+            const Real v1 = vn[k] + dt * as[k];
+            vs[k][i] = v1;
+            const Real x = xn[k] + Real(0.5) * dt * (vn[k] + v1);
+            xs[k][i] = d.periodic[k] ? wrap(x, d.lo[k], d.hi[k]) : x;
+        }
+    });
+}
+
+time::DtLimit SphSolver::stable_dt() const {
+    auto pv = const_cast<particles::ParticleSet&>(set_).view();
+    const auto eos = eos_;
+    const Real cmax = exec::max_of(pv.n, [=](Index i) {
+        if (!pv.is_fluid(i)) return Real(0);
+        return eos.sound_speed(pv.rho[i]) +
+               std::sqrt(pv.vx[i] * pv.vx[i] + pv.vy[i] * pv.vy[i] + pv.vz[i] * pv.vz[i]);
+    });
+    const Real amax = exec::max_of(pv.n, [=](Index i) {
+        if (!pv.is_fluid(i)) return Real(0);
+        return std::sqrt(pv.ax[i] * pv.ax[i] + pv.ay[i] * pv.ay[i] + pv.az[i] * pv.az[i]);
+    });
+    const Real h = params_.h;
+    time::DtLimit lim{params_.cfl * h / std::max(cmax, params_.c0), "cfl"};
+    if (amax > 0) {
+        const Real dtf = params_.cfl * std::sqrt(h / amax);
+        if (dtf < lim.dt) lim = {dtf, "force"};
+    }
+    const Real nu = std::visit([](const auto& v) { return v.kinematic_viscosity(); },
+                               models_.viscosity);
+    if (nu > 0) {
+        const Real dtv = Real(0.125) * h * h / nu; // Morris et al. 1997, eq. 19
+        if (dtv < lim.dt) lim = {dtv, "viscous"};
+    }
+    return lim;
+}
+
+time::DtLimit SphSolver::initial_dt() const {
+    const Real h = params_.h;
+    time::DtLimit lim{params_.cfl * h / params_.c0, "cfl"};
+    const Real g = norm(params_.gravity);
+    if (g > 0 && params_.cfl * std::sqrt(h / g) < lim.dt)
+        lim = {params_.cfl * std::sqrt(h / g), "force"};
+    const Real nu = std::visit([](const auto& v) { return v.kinematic_viscosity(); },
+                               models_.viscosity);
+    if (nu > 0 && Real(0.125) * h * h / nu < lim.dt) lim = {Real(0.125) * h * h / nu, "viscous"};
+    return lim;
+}
+
+void SphSolver::check_health(Real t) const {
+    const Index n = set_.size();
+    Index bad = n;
+    const Domain d = domain_;
+    const auto& s = set_;
+#pragma omp parallel for reduction(min : bad)
+    for (Index i = 0; i < n; ++i) {
+        const Real v[7] = {s.x[i], s.y[i], s.z[i], s.vx[i], s.vy[i], s.vz[i], s.rho[i]};
+        bool ok = true;
+        for (Real q : v) ok = ok && std::isfinite(q);
+        for (int k = 0; k < 3 && ok; ++k) {
+            const Real c = v[k];
+            if (!d.periodic[k] && (c < d.lo[k] || c > d.hi[k])) ok = false;
+        }
+        if (!ok && i < bad) bad = i;
+    }
+    if (bad == n) return;
+    const bool finite = std::isfinite(s.x[bad]) && std::isfinite(s.vx[bad]) &&
+                        std::isfinite(s.rho[bad]) && std::isfinite(s.z[bad]);
+    throw InstabilityError(fmt::format(
+        "{} at t = {:.6g} s: particle id {} ({}) at ({:.4g}, {:.4g}, {:.4g}) m, velocity "
+        "({:.4g}, {:.4g}, {:.4g}) m/s, density {:.6g} kg/m^3{}",
+        finite ? "particle left the domain" : "non-finite state (NaN/Inf)", t, s.id[bad],
+        s.kind[bad] == std::uint8_t(Kind::fluid) ? "fluid" : "boundary", s.x[bad], s.y[bad],
+        s.z[bad], s.vx[bad], s.vy[bad], s.vz[bad], s.rho[bad],
+        finite ? fmt::format("; domain is ({}, {}, {}) to ({}, {}, {}) m", d.lo.x, d.lo.y,
+                             d.lo.z, d.hi.x, d.hi.y, d.hi.z)
+               : std::string()));
+}
+
+void SphSolver::add_timings(time::Timings& t) const {
+    t.neighbors += t_neighbors_;
+    t.forces += t_forces_;
+    t.integration += t_integrate_;
+}
+
+void SphSolver::remove_group(std::int16_t group) {
+    std::vector<std::uint8_t> keep(set_.size());
+    for (Index i = 0; i < set_.size(); ++i)
+        keep[i] = !(set_.kind[i] == std::uint8_t(Kind::boundary) && set_.group[i] == group);
+    set_.compact(keep);
+}
+
+} // namespace debrisflow::sph

@@ -1,0 +1,57 @@
+#pragma once
+#include "debrisflow/models/eos_tait_k.hpp"
+#include "debrisflow/neighbors/cell_grid.hpp"
+#include "debrisflow/particles/particle_set.hpp"
+#include "debrisflow/sph/sph_models.hpp"
+#include "debrisflow/time/phase.hpp"
+#include <vector>
+
+namespace debrisflow::sph {
+
+// The axis-aligned simulation box; particles leaving a non-periodic side stop the run.
+struct Domain {
+    Vec3 lo, hi;
+    std::array<bool, 3> periodic{false, false, false};
+};
+
+// Weakly-compressible SPH phase: DBC boundaries, Tait EOS, selectable kernel, viscosity and
+// density diffusion. Advanced by the Integrator's symplectic predictor-corrector.
+class SphSolver : public time::Phase {
+public:
+    SphSolver(const SphParams& params, particles::ParticleSet& set, const Domain& domain);
+
+    const char* name() const override { return "sph"; }
+    void update_neighbors(bool reorder) override;
+    void compute_forces() override;
+    void predictor(Real dt) override;
+    void corrector(Real dt) override;
+    time::DtLimit stable_dt() const override;
+    void check_health(Real t) const override;
+    void add_timings(time::Timings& t) const override;
+
+    const SphParams& params() const { return params_; }
+    const models::TaitEos& eos() const { return eos_; }
+    const neighbors::CellGrid& grid() const { return grid_; }
+    const SphModels& models() const { return models_; }
+    const Domain& domain() const { return domain_; }
+    particles::ParticleSet& particles() { return set_; }
+    const particles::ParticleSet& particles() const { return set_; }
+    // Removes all boundary particles of wall group `group` (a gate lifting).
+    void remove_group(std::int16_t group);
+    // Initial time-step estimate from the parameters alone (before any motion).
+    time::DtLimit initial_dt() const;
+
+private:
+    void update_pressure();
+    SphParams params_;
+    particles::ParticleSet& set_;
+    Domain domain_;
+    models::TaitEos eos_;
+    SphModels models_;
+    neighbors::CellGrid grid_;
+    std::vector<Real> tau_;
+    std::vector<Real> x0_, y0_, z0_, vx0_, vy0_, vz0_, rho0_; // state at t_n (predictor)
+    double t_neighbors_ = 0, t_forces_ = 0, t_integrate_ = 0;
+};
+
+} // namespace debrisflow::sph

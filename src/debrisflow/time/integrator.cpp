@@ -1,0 +1,101 @@
+#include "debrisflow/time/integrator.hpp"
+#include "debrisflow/core/error.hpp"
+#include "debrisflow/core/stopwatch.hpp"
+#include <chrono>
+#include <fmt/format.h>
+
+namespace debrisflow::time {
+
+DtLimit Integrator::stable_dt() const {
+    DtLimit best{std::numeric_limits<Real>::max(), "none"};
+    for (const Phase* p : phases_) {
+        DtLimit d = p->stable_dt();
+        if (d.dt < best.dt) best = {d.dt, std::string(p->name()) + "/" + d.limiter};
+    }
+    return best;
+}
+
+void Integrator::call_hooks(Hook where, const StepInfo& info) {
+    for (auto& h : hooks_)
+        if (h.where == where) h.f(info);
+}
+
+void Integrator::notify_observers(const StepInfo& info, bool force) {
+    ScopedTimer timer(t_output_);
+    for (auto& o : observers_) {
+        const bool due = o.when.due(info.step, info.t);
+        if (due || force) o.f(info);
+    }
+}
+
+RunResult Integrator::run(Real t0, Real t_end) {
+    const auto wall0 = std::chrono::steady_clock::now();
+    StepInfo info;
+    info.t = t0;
+    for (Phase* p : phases_) {
+        p->update_neighbors(reorder_every_ > 0);
+        p->compute_forces();
+    }
+    DtLimit first = stable_dt();
+    info.dt = first.dt;
+    info.limiter = first.limiter;
+    notify_observers(info, true);
+    const Real dt_floor = min_dt_fraction_ * first.dt;
+    auto finish = [&]() {
+        RunResult r;
+        r.steps = info.step;
+        r.t = info.t;
+        r.wall_seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+        for (const Phase* p : phases_) p->add_timings(r.timings);
+        r.timings.output = t_output_;
+        return r;
+    };
+    try {
+        while (info.t < t_end - Real(1e-12) * (1 + t_end)) {
+            call_hooks(Hook::step_begin, info);
+            DtLimit lim = stable_dt();
+            if (fixed_dt_ > 0) {
+                if (fixed_dt_ > lim.dt)
+                    throw InstabilityError(fmt::format(
+                        "the fixed time step {:.4g} s exceeds the stable step {:.4g} s ({}) "
+                        "at t = {:.6g} s",
+                        fixed_dt_, lim.dt, lim.limiter, info.t));
+                lim = {fixed_dt_, "fixed"};
+            }
+            if (lim.dt < dt_floor)
+                throw InstabilityError(fmt::format(
+                    "time step collapsed at t = {:.6g} s: dt = {:.3g} s ({}) is below {:.3g} x "
+                    "the initial {:.3g} s",
+                    info.t, lim.dt, lim.limiter, min_dt_fraction_, first.dt));
+            if (info.t + lim.dt > t_end) lim.dt = t_end - info.t;
+            info.dt = lim.dt;
+            info.limiter = lim.limiter;
+            for (Phase* p : phases_) p->predictor(lim.dt);
+            for (Phase* p : phases_) p->update_neighbors(false);
+            for (Phase* p : phases_) p->compute_forces();
+            for (Phase* p : phases_) p->corrector(lim.dt);
+            info.t += lim.dt;
+            ++info.step;
+            call_hooks(Hook::after_integration, info);
+            const bool reorder = reorder_every_ > 0 && info.step % reorder_every_ == 0;
+            for (Phase* p : phases_) p->update_neighbors(reorder);
+            call_hooks(Hook::after_neighbors, info);
+            for (Phase* p : phases_) p->compute_forces();
+            call_hooks(Hook::after_forces, info);
+            for (Phase* p : phases_) p->check_health(info.t);
+            call_hooks(Hook::step_end, info);
+            info.last = !(info.t < t_end - Real(1e-12) * (1 + t_end));
+            notify_observers(info, info.last);
+        }
+    } catch (const InstabilityError&) {
+        info.last = true;
+        result_ = finish();
+        notify_observers(info, true);
+        throw;
+    }
+    result_ = finish();
+    return result_;
+}
+
+} // namespace debrisflow::time

@@ -1,0 +1,79 @@
+#pragma once
+#include "debrisflow/time/phase.hpp"
+#include "debrisflow/time/schedule.hpp"
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace debrisflow::time {
+
+// Where a hook runs inside a step.
+enum class Hook { step_begin, after_neighbors, after_forces, after_integration, step_end };
+
+// What observers and hooks see of the current step.
+struct StepInfo {
+    long step = 0;
+    Real t = 0;
+    Real dt = 0;
+    std::string limiter;
+    bool last = false; // final call of the run (end time reached or run stopped)
+};
+
+struct RunResult {
+    long steps = 0;
+    Real t = 0;
+    double wall_seconds = 0;
+    Timings timings;
+};
+
+// The one time loop: the symplectic position-Verlet scheme of DualSPHysics (Leimkuhler et al.
+// 1996; Dominguez et al. 2022, eqs. 20-22), a predictor to t_n + dt/2 with the derivatives at
+// t_n and a corrector with those at t_n + dt/2 (two force evaluations per step):
+//   predictor: x, v, rho advanced by dt/2;   forces at t_n+1/2
+//   corrector: v_n+1 = v_n + dt a_n+1/2, x_n+1 = x_n + dt (v_n + v_n+1)/2,
+//              rho_n+1 = rho_n (2 - eps)/(2 + eps), eps = -dt drho_n+1/2 / rho_n+1/2
+// dt is the minimum over phases of their stable step; the limiting criterion is reported.
+class Integrator {
+public:
+    using Callback = std::function<void(const StepInfo&)>;
+
+    void add_phase(Phase* p) { phases_.push_back(p); }
+    void add_hook(Hook where, Callback f) { hooks_.push_back({where, std::move(f)}); }
+    void add_observer(Schedule when, Callback f) { observers_.push_back({when, std::move(f)}); }
+    // dt below min_dt_fraction x the first step's dt stops the run (dt collapse watchdog).
+    void set_min_dt_fraction(Real f) { min_dt_fraction_ = f; }
+    // An optional fixed step; it must not exceed the stable one.
+    void set_fixed_dt(Real dt) { fixed_dt_ = dt; }
+    // Particles are sorted by cell every n steps (0: never).
+    void set_reorder_every(int n) { reorder_every_ = n; }
+
+    // Runs from t0 to t_end. On instability the observers get a final call (last = true)
+    // and the InstabilityError propagates.
+    RunResult run(Real t0, Real t_end);
+    DtLimit stable_dt() const;
+    // Steps, time and timings of the last run, also after it stopped on an instability.
+    const RunResult& result() const { return result_; }
+
+private:
+    void call_hooks(Hook where, const StepInfo& info);
+    void notify_observers(const StepInfo& info, bool force);
+    struct HookEntry {
+        Hook where;
+        Callback f;
+    };
+    struct ObserverEntry {
+        Schedule when;
+        Callback f;
+    };
+    std::vector<Phase*> phases_;
+    std::vector<HookEntry> hooks_;
+    std::vector<ObserverEntry> observers_;
+    Real min_dt_fraction_ = 1e-3;
+    Real fixed_dt_ = 0;
+    int reorder_every_ = 1;
+    double t_output_ = 0;
+    RunResult result_;
+};
+
+} // namespace debrisflow::time
