@@ -94,7 +94,8 @@ io::RunReport Simulation::run(const RunOptions& opt) {
     });
 
     try {
-        report.result = integ.run(0, spec_.t_end);
+        report.result = integ.run(t_, opt.until > 0 ? opt.until : spec_.t_end);
+        t_ = report.result.t;
     } catch (const InstabilityError& e) {
         report.status = "unstable";
         report.message = e.what();

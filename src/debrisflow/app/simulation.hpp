@@ -13,6 +13,7 @@ struct RunOptions {
     std::string out_dir;  // empty: no files (tests); probes still sample in memory
     bool quiet = false;
     int threads = 0;      // 0: OpenMP default
+    Real until = 0;       // stop at this time instead of time.end (0: time.end)
 };
 
 // A case assembled from its spec: particles, the SPH phase, the integrator, gates, probes
@@ -21,7 +22,7 @@ class Simulation {
 public:
     explicit Simulation(io::CaseSpec spec);
 
-    // Runs to time.end. On instability the output so far is kept, summary.json is written with
+    // Runs from the current time (0, or where the previous run stopped) to time.end. On instability the output so far is kept, summary.json is written with
     // status "unstable", and the InstabilityError is rethrown.
     io::RunReport run(const RunOptions& opt);
 
@@ -39,6 +40,7 @@ private:
     std::unique_ptr<sph::SphSolver> solver_;
     std::vector<std::unique_ptr<probes::Probe>> probes_;
     Log log_;
+    Real t_ = 0;
 };
 
 } // namespace debrisflow::app

@@ -2,6 +2,7 @@
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/probes/sph_probes.hpp"
 #include <filesystem>
+#include <limits>
 #include <fmt/format.h>
 
 namespace debrisflow::probes {
@@ -29,11 +30,24 @@ void Probe::record(Real t, const sph::SphSolver& solver) {
         }
     last_ = v;
     ++samples_;
+    history_.push_back({t});
+    history_.back().insert(history_.back().end(), v.begin(), v.end());
     if (csv_) {
         csv_ << fmt::format("{:.9g}", t);
         for (Real x : v) csv_ << fmt::format(",{:.9g}", x);
         csv_ << "\n";
     }
+}
+
+Real Probe::mean(std::size_t column, Real t0, Real t1) const {
+    Real sum = 0;
+    long n = 0;
+    for (const auto& row : history_)
+        if (row[0] >= t0 && row[0] <= t1) {
+            sum += row[column + 1];
+            ++n;
+        }
+    return n ? sum / Real(n) : std::numeric_limits<Real>::quiet_NaN();
 }
 
 std::unique_ptr<Probe> make_probe(const io::ProbeSpec& s, const io::CaseSpec& c) {

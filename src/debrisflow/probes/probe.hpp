@@ -25,6 +25,10 @@ public:
     const std::vector<Real>& finals() const { return last_; }
     bool has_samples() const { return samples_ > 0; }
     Real peak_time(std::size_t column) const { return peak_t_[column]; }
+    // Every sample taken: {time, column values...}.
+    const std::vector<std::vector<Real>>& history() const { return history_; }
+    // Mean of a column over samples with t0 <= t <= t1.
+    Real mean(std::size_t column, Real t0, Real t1) const;
 
 protected:
     Probe(std::string name, Real every) : name_(std::move(name)), every_(every) {}
@@ -35,6 +39,7 @@ private:
     std::ofstream csv_;
     std::vector<Real> peak_, peak_t_, last_;
     long samples_ = 0;
+    std::vector<std::vector<Real>> history_;
 };
 
 std::unique_ptr<Probe> make_probe(const io::ProbeSpec& spec, const io::CaseSpec& c);

@@ -113,7 +113,10 @@ std::vector<Vec3> build_wall(const io::WallSpec& w, const io::CaseSpec& c) {
 
 void build_particles(const io::CaseSpec& c, particles::ParticleSet& set) {
     const auto& sph = c.sph;
-    const Real mass = sph.rho0 * std::pow(c.dp, c.dim); // 2D: per metre of thickness
+    // A particle's mass is its initial density times its lattice volume dp^dim (2D: per metre
+    // of thickness), so that SPH volumes m/rho match the lattice where the column starts
+    // compressed by its own weight.
+    const Real volume = std::pow(c.dp, c.dim);
     const models::TaitEos eos(sph.rho0, sph.c0, sph.gamma);
     std::vector<Vec3> boundary;
     std::vector<std::vector<Vec3>> walls;
@@ -154,7 +157,7 @@ void build_particles(const io::CaseSpec& c, particles::ParticleSet& set) {
         for (const Vec3& p : pts) {
             Real rho = sph.rho0;
             if (fl.hydrostatic && g > 0) rho = eos.density(sph.rho0 * g * (top + dot(p, down)));
-            set.add(p, fl.velocity, rho, mass, particles::Kind::fluid, std::int16_t(f));
+            set.add(p, fl.velocity, rho, rho * volume, particles::Kind::fluid, std::int16_t(f));
         }
     }
     // Boundary particles under a hydrostatic column start with that column's pressure
@@ -167,8 +170,8 @@ void build_particles(const io::CaseSpec& c, particles::ParticleSet& set) {
                 if (p.x >= col.lo.x - reach && p.x <= col.hi.x + reach && p.y >= col.lo.y - reach &&
                     p.y <= col.hi.y + reach && col.top + dot(p, down) > 0)
                     pressure = std::max(pressure, sph.rho0 * g * (col.top + dot(p, down)));
-            set.add(p, {}, eos.density(pressure), mass, particles::Kind::boundary,
-                    std::int16_t(w));
+            const Real rho = eos.density(pressure);
+            set.add(p, {}, rho, rho * volume, particles::Kind::boundary, std::int16_t(w));
         }
 }
 
