@@ -45,8 +45,8 @@ io::RunReport Simulation::run(const RunOptions& opt) {
         for (auto& p : probes_) p->open(opt.out_dir + "/probes");
         if (spec_.vtk) vtk = std::make_unique<io::VtkSeries>(opt.out_dir + "/vtk");
     }
-    log_.line(fmt::format("debrisflow: case '{}' ({}), {}D, dp = {} m, end time {} s",
-                          spec_.name, spec_.file, spec_.dim, spec_.dp, spec_.t_end));
+    log_.line(fmt::format("debrisflow: case '{}' ({}), {}D, dp = {} m, end time {} s", spec_.name,
+                          spec_.file, spec_.dim, spec_.dp, spec_.t_end));
     log_.line(fmt::format("particles: {} fluid, {} boundary; threads: {}", report.fluid,
                           report.boundary, report.threads));
     log_.line(fmt::format("sph: kernel {}, h = {:.4g} m, c0 = {:.4g} m/s, viscosity {}, "
@@ -81,8 +81,8 @@ io::RunReport Simulation::run(const RunOptions& opt) {
     auto last_report = wall0;
     integ.add_observer(time::Schedule::every_steps(1), [&](const time::StepInfo& s) {
         const auto now = std::chrono::steady_clock::now();
-        if (!s.last && std::chrono::duration<double>(now - last_report).count() <
-                           spec_.progress_seconds)
+        if (!s.last &&
+            std::chrono::duration<double>(now - last_report).count() < spec_.progress_seconds)
             return;
         last_report = now;
         const double wall = std::chrono::duration<double>(now - wall0).count();
@@ -112,11 +112,12 @@ io::RunReport Simulation::run(const RunOptions& opt) {
     log_.line(fmt::format("finished: {} steps to t = {:.6g} s in {:.2f} s wall, {:.3g} "
                           "particle-steps/s (neighbours {:.2f} s, forces {:.2f} s, integration "
                           "{:.2f} s, output {:.2f} s)",
-                          r.steps, r.t, r.wall_seconds, pss, r.timings.neighbors,
-                          r.timings.forces, r.timings.integration, r.timings.output));
+                          r.steps, r.t, r.wall_seconds, pss, r.timings.neighbors, r.timings.forces,
+                          r.timings.integration, r.timings.output));
     if (files) {
         io::write_summary(opt.out_dir + "/summary.json", spec_, report, probes_);
-        log_.line("output: " + opt.out_dir + " (vtk/particles.pvd for ParaView, probes/*.csv, "
+        log_.line("output: " + opt.out_dir +
+                  " (vtk/particles.pvd for ParaView, probes/*.csv, "
                   "summary.json, log.txt)");
     }
     return report;

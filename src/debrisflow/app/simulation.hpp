@@ -10,10 +10,10 @@
 namespace debrisflow::app {
 
 struct RunOptions {
-    std::string out_dir;  // empty: no files (tests); probes still sample in memory
+    std::string out_dir; // empty: no files (tests); probes still sample in memory
     bool quiet = false;
-    int threads = 0;      // 0: OpenMP default
-    Real until = 0;       // stop at this time instead of time.end (0: time.end)
+    int threads = 0; // 0: OpenMP default
+    Real until = 0;  // stop at this time instead of time.end (0: time.end)
 };
 
 // A case assembled from its spec: particles, the SPH phase, the integrator, gates, probes
@@ -22,8 +22,9 @@ class Simulation {
 public:
     explicit Simulation(io::CaseSpec spec);
 
-    // Runs from the current time (0, or where the previous run stopped) to time.end. On instability the output so far is kept, summary.json is written with
-    // status "unstable", and the InstabilityError is rethrown.
+    // Runs from the current time (0, or where the previous run stopped) to time.end. On instability
+    // the output so far is kept, summary.json is written with status "unstable", and the
+    // InstabilityError is rethrown.
     io::RunReport run(const RunOptions& opt);
 
     const io::CaseSpec& spec() const { return spec_; }

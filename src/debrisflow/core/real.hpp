@@ -10,7 +10,7 @@ using Real = float;
 using Real = double;
 #endif
 
-using Index = std::int32_t;    // local particle index (changes when a set is reordered)
+using Index = std::int32_t;       // local particle index (changes when a set is reordered)
 using ParticleId = std::uint64_t; // persistent id (survives reordering)
 
 } // namespace debrisflow

@@ -91,10 +91,15 @@ sph::Domain read_domain(const ConfigTable& t, int dim) {
             t.fail("max", fmt::format("must exceed min in {}", "xyz"[k]));
     if (t.has("periodic")) {
         for (const auto& s : t.strings("periodic")) {
-            if (s == "x") d.periodic[0] = true;
-            else if (s == "y" && dim == 3) d.periodic[1] = true;
-            else if (s == "z") d.periodic[2] = true;
-            else t.fail("periodic", "expected a list of \"x\", \"y\" (3D) or \"z\", got \"" + s + "\"");
+            if (s == "x")
+                d.periodic[0] = true;
+            else if (s == "y" && dim == 3)
+                d.periodic[1] = true;
+            else if (s == "z")
+                d.periodic[2] = true;
+            else
+                t.fail("periodic",
+                       "expected a list of \"x\", \"y\" (3D) or \"z\", got \"" + s + "\"");
         }
     }
     t.finish();
@@ -132,8 +137,8 @@ CaseSpec read_case(const std::string& path, const std::vector<std::string>& over
     } catch (const toml::parse_error& e) {
         const auto& src = e.source();
         if (!std::filesystem::exists(path)) throw InputError(path + ": file not found");
-        throw InputError(fmt::format("{}:{}:{}: {}", path, src.begin.line, src.begin.column,
-                                     e.description()));
+        throw InputError(
+            fmt::format("{}:{}:{}: {}", path, src.begin.line, src.begin.column, e.description()));
     }
     for (const auto& o : overrides) apply_override(doc, o);
     std::ostringstream resolved;

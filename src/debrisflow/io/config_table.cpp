@@ -13,8 +13,8 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
     for (std::size_t i = 1; i <= a.size(); ++i) {
         cur[0] = i;
         for (std::size_t j = 1; j <= b.size(); ++j)
-            cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1,
-                               prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            cur[j] = std::min(
+                {prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
         std::swap(prev, cur);
     }
     return prev[b.size()];
@@ -22,13 +22,20 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
 
 std::string type_name(const toml::node& n) {
     switch (n.type()) {
-    case toml::node_type::table: return "a table";
-    case toml::node_type::array: return "an array";
-    case toml::node_type::string: return "a string";
-    case toml::node_type::integer: return "an integer";
-    case toml::node_type::floating_point: return "a float";
-    case toml::node_type::boolean: return "a boolean";
-    default: return "a date/time";
+    case toml::node_type::table:
+        return "a table";
+    case toml::node_type::array:
+        return "an array";
+    case toml::node_type::string:
+        return "a string";
+    case toml::node_type::integer:
+        return "an integer";
+    case toml::node_type::floating_point:
+        return "a float";
+    case toml::node_type::boolean:
+        return "a boolean";
+    default:
+        return "a date/time";
     }
 }
 
@@ -55,15 +62,17 @@ const toml::node* ConfigTable::node(const std::string& key) const {
     return table_->get(key);
 }
 
-bool ConfigTable::has(const std::string& key) const { return table_->get(key) != nullptr; }
+bool ConfigTable::has(const std::string& key) const {
+    return table_->get(key) != nullptr;
+}
 
 const toml::node& ConfigTable::require(const std::string& key) const {
     const toml::node* n = node(key);
     if (!n) {
         const auto& src = table_->source();
         std::string full = prefix_.empty() ? key : prefix_ + "." + key;
-        throw InputError(fmt::format("{}:{}:{}: missing required key '{}'", file_,
-                                     src.begin.line, src.begin.column, full));
+        throw InputError(fmt::format("{}:{}:{}: missing required key '{}'", file_, src.begin.line,
+                                     src.begin.column, full));
     }
     return *n;
 }
@@ -128,9 +137,12 @@ std::vector<Real> ConfigTable::reals(const std::string& key) const {
     if (!arr) fail(key, "expected an array of numbers, found " + type_name(n));
     std::vector<Real> out;
     for (const auto& e : *arr) {
-        if (auto v = e.value_exact<double>()) out.push_back(Real(*v));
-        else if (auto w = e.value_exact<std::int64_t>()) out.push_back(Real(*w));
-        else fail(key, "expected an array of numbers, found an element that is " + type_name(e));
+        if (auto v = e.value_exact<double>())
+            out.push_back(Real(*v));
+        else if (auto w = e.value_exact<std::int64_t>())
+            out.push_back(Real(*w));
+        else
+            fail(key, "expected an array of numbers, found an element that is " + type_name(e));
     }
     return out;
 }
@@ -141,8 +153,10 @@ std::vector<std::string> ConfigTable::strings(const std::string& key) const {
     if (!arr) fail(key, "expected an array of strings, found " + type_name(n));
     std::vector<std::string> out;
     for (const auto& e : *arr) {
-        if (auto v = e.value_exact<std::string>()) out.push_back(*v);
-        else fail(key, "expected an array of strings");
+        if (auto v = e.value_exact<std::string>())
+            out.push_back(*v);
+        else
+            fail(key, "expected an array of strings");
     }
     return out;
 }
@@ -196,7 +210,8 @@ void ConfigTable::finish() const {
         const auto& src = v.source();
         std::string full = prefix_.empty() ? key : prefix_ + "." + key;
         if (src.begin.line == 0)
-            throw InputError(fmt::format("{} (--set override): unknown key '{}'{}", file_, full, hint));
+            throw InputError(
+                fmt::format("{} (--set override): unknown key '{}'{}", file_, full, hint));
         throw InputError(fmt::format("{}:{}:{}: unknown key '{}'{}", file_, src.begin.line,
                                      src.begin.column, full, hint));
     }

@@ -6,7 +6,9 @@
 namespace debrisflow::io {
 
 namespace {
-std::string num(double v) { return std::isfinite(v) ? fmt::format("{:.9g}", v) : "null"; }
+std::string num(double v) {
+    return std::isfinite(v) ? fmt::format("{:.9g}", v) : "null";
+}
 std::string quoted(const std::string& s) {
     std::string o = "\"";
     for (char c : s) {
@@ -56,8 +58,7 @@ void write_summary(const std::string& path, const CaseSpec& spec, const RunRepor
             const bool any = p.has_samples();
             o << (c ? ", " : "") << quoted(cols[c])
               << fmt::format(": {{\"peak\": {}, \"peak_time\": {}, \"final\": {}}}",
-                             any ? num(p.peaks()[c]) : "null",
-                             any ? num(p.peak_time(c)) : "null",
+                             any ? num(p.peaks()[c]) : "null", any ? num(p.peak_time(c)) : "null",
                              any ? num(p.finals()[c]) : "null");
         }
         o << "}";

@@ -16,8 +16,8 @@ struct Block {
     std::vector<char> bytes;
 };
 
-template <class T> Block make_block(std::string name, std::string type, int comps,
-                                    const std::vector<T>& data) {
+template <class T>
+Block make_block(std::string name, std::string type, int comps, const std::vector<T>& data) {
     Block b{std::move(name), std::move(type), comps, {}};
     b.bytes.resize(data.size() * sizeof(T));
     std::memcpy(b.bytes.data(), data.data(), b.bytes.size());
@@ -26,7 +26,8 @@ template <class T> Block make_block(std::string name, std::string type, int comp
 
 } // namespace
 
-VtkSeries::VtkSeries(std::string dir, std::string base) : dir_(std::move(dir)), base_(std::move(base)) {
+VtkSeries::VtkSeries(std::string dir, std::string base)
+    : dir_(std::move(dir)), base_(std::move(base)) {
     std::filesystem::create_directories(dir_);
 }
 

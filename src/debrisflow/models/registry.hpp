@@ -26,8 +26,8 @@ template <class... Models> struct Registry {
     template <class F> static auto visit_name(const std::string& name, F&& f) {
         using R = decltype(f.template operator()<std::variant_alternative_t<0, Variant>>());
         if constexpr (std::is_void_v<R>) {
-            bool found = ((name == Models::name ? (f.template operator()<Models>(), true) : false) ||
-                          ...);
+            bool found =
+                ((name == Models::name ? (f.template operator()<Models>(), true) : false) || ...);
             if (!found) throw std::invalid_argument("unknown model \"" + name + "\"");
         } else {
             std::optional<R> out;

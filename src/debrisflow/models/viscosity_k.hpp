@@ -36,7 +36,7 @@ struct LaminarViscosity {
     DF_HD Vec3 acceleration(const PairState& s) const {
         const Real mu2 = 2 * rho0 * nu;
         const Real k = s.mass_j * mu2 * s.r2 * s.f / (s.rho_i * s.rho_j * (s.r2 + eta2));
-        return k * s.v;
+        return k * s.v_visc;
     }
     Real kinematic_viscosity() const { return nu; }
 };

@@ -36,7 +36,8 @@ void CellGrid::build(const Real* x, const Real* y, const Real* z, Index n) {
     const int n0 = nc_[0], n1 = nc_[1];
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
-        cell_of_[i] = g.cell_coord(x[i], 0) + n0 * (g.cell_coord(y[i], 1) + n1 * g.cell_coord(z[i], 2));
+        cell_of_[i] =
+            g.cell_coord(x[i], 0) + n0 * (g.cell_coord(y[i], 1) + n1 * g.cell_coord(z[i], 2));
     }
     const int nc = cell_count();
     count_.assign(std::size_t(nc) + 1, 0);
@@ -48,6 +49,8 @@ void CellGrid::build(const Real* x, const Real* y, const Real* z, Index n) {
     view_.order = order_.data();
 }
 
-GridView CellGrid::view() const { return view_; }
+GridView CellGrid::view() const {
+    return view_;
+}
 
 } // namespace debrisflow::neighbors

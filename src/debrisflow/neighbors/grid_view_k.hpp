@@ -32,8 +32,10 @@ struct GridView {
         for (int d = 0; d < 3; ++d) {
             if (!periodic[d]) continue;
             const Real half = Real(0.5) * length[d];
-            if (r[d] > half) r[d] -= length[d];
-            else if (r[d] < -half) r[d] += length[d];
+            if (r[d] > half)
+                r[d] -= length[d];
+            else if (r[d] < -half)
+                r[d] += length[d];
         }
         return r;
     }

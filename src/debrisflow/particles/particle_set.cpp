@@ -5,7 +5,7 @@ namespace debrisflow::particles {
 namespace {
 template <class Fn> void for_each_field(ParticleSet& s, Fn&& fn) {
     for (auto* f : {&s.x, &s.y, &s.z, &s.vx, &s.vy, &s.vz, &s.ax, &s.ay, &s.az, &s.rho, &s.drho,
-                    &s.p, &s.mass})
+                    &s.p, &s.mass, &s.wnx, &s.wny, &s.wnz, &s.wd})
         fn(*f);
     fn(s.kind);
     fn(s.group);
@@ -33,6 +33,10 @@ void ParticleSet::add(Vec3 pos, Vec3 vel, Real density, Real m, Kind k, std::int
     drho.push_back(0);
     p.push_back(0);
     mass.push_back(m);
+    wnx.push_back(0);
+    wny.push_back(0);
+    wnz.push_back(0);
+    wd.push_back(0);
     kind.push_back(std::uint8_t(k));
     group.push_back(grp);
     id.push_back(next_id_++);
@@ -58,11 +62,17 @@ void ParticleSet::compact(const std::vector<std::uint8_t>& keep) {
     });
 }
 
+void ParticleSet::set_wall(Index i, Vec3 normal, Real depth) {
+    wnx[i] = normal.x;
+    wny[i] = normal.y;
+    wnz[i] = normal.z;
+    wd[i] = depth;
+}
+
 ParticleView ParticleSet::view() {
-    return {x.data(),  y.data(),    z.data(),  vx.data(),    vy.data(),
-            vz.data(), ax.data(),   ay.data(), az.data(),    rho.data(),
-            drho.data(), p.data(),  mass.data(), kind.data(), group.data(),
-            size()};
+    return {x.data(),   y.data(),   z.data(),   vx.data(),   vy.data(),    vz.data(),   ax.data(),
+            ay.data(),  az.data(),  rho.data(), drho.data(), p.data(),     mass.data(), wnx.data(),
+            wny.data(), wnz.data(), wd.data(),  kind.data(), group.data(), size()};
 }
 
 } // namespace debrisflow::particles

@@ -15,6 +15,7 @@ struct ParticleView {
     Real *vx, *vy, *vz;
     Real *ax, *ay, *az;
     Real *rho, *drho, *p, *mass;
+    Real *wnx, *wny, *wnz, *wd; // boundary: wall normal into the fluid, depth behind the wall
     std::uint8_t* kind;
     std::int16_t* group;
     Index n;
@@ -30,6 +31,7 @@ static_assert(std::is_trivially_copyable_v<ParticleView>);
 class ParticleSet {
 public:
     std::vector<Real> x, y, z, vx, vy, vz, ax, ay, az, rho, drho, p, mass;
+    std::vector<Real> wnx, wny, wnz, wd; // zero for fluid particles
     std::vector<std::uint8_t> kind;
     std::vector<std::int16_t> group;
     std::vector<ParticleId> id;
@@ -38,6 +40,8 @@ public:
     Index count(Kind k) const;
 
     void add(Vec3 pos, Vec3 vel, Real density, Real m, Kind k, std::int16_t grp);
+    // Wall normal (into the fluid) and depth behind the wall surface of boundary particle i.
+    void set_wall(Index i, Vec3 normal, Real depth);
 
     // Applies new order: element i of the result is old element perm[i].
     void permute(const std::vector<Index>& perm);

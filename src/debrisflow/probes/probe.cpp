@@ -2,8 +2,8 @@
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/probes/sph_probes.hpp"
 #include <filesystem>
-#include <limits>
 #include <fmt/format.h>
+#include <limits>
 
 namespace debrisflow::probes {
 

@@ -40,9 +40,16 @@ std::vector<Vec3> fill_shape(const io::ShapeSpec& s, Real dp, int dim) {
 }
 
 // Surface samples of a mesh with `layers` layers behind it (opposite to the normals).
-std::vector<Vec3> mesh_wall(const io::ShapeSpec& s, Real dp, int layers) {
+// A boundary particle with the wall it stands for: unit normal n into the fluid and depth d
+// behind the wall surface (used by the no-slip velocity extrapolation of Morris et al. 1997).
+struct WallPoint {
+    Vec3 p, n;
+    Real d;
+};
+
+std::vector<WallPoint> mesh_wall(const io::ShapeSpec& s, Real dp, int layers) {
     const TriangleMesh mesh = TriangleMesh::read_stl(s.file, s.scale, s.offset);
-    std::vector<Vec3> raw;
+    std::vector<WallPoint> raw;
     for (const auto& t : mesh.triangles) {
         const Vec3 n = t.normal();
         const Vec3 e1 = t.b - t.a, e2 = t.c - t.a;
@@ -53,7 +60,8 @@ std::vector<Vec3> mesh_wall(const io::ShapeSpec& s, Real dp, int layers) {
                 const Real u = Real(i) / n1, v = Real(j) / n2;
                 if (u + v > 1 + 1e-9) continue;
                 const Vec3 p = t.a + u * e1 + v * e2;
-                for (int k = 0; k < layers; ++k) raw.push_back(p - ((k + 0.5) * dp) * n);
+                for (int k = 0; k < layers; ++k)
+                    raw.push_back({p - ((k + 0.5) * dp) * n, n, (k + 0.5) * dp});
             }
     }
     // Thin the samples to about one per 0.8 dp (greedy, hashed by cell).
@@ -64,8 +72,9 @@ std::vector<Vec3> mesh_wall(const io::ShapeSpec& s, Real dp, int layers) {
                std::to_string(long(std::floor(p.z / gap)) + dz);
     };
     std::unordered_map<std::string, std::vector<Vec3>> hash;
-    std::vector<Vec3> out;
-    for (const Vec3& p : raw) {
+    std::vector<WallPoint> out;
+    for (const WallPoint& wp : raw) {
+        const Vec3 p = wp.p;
         bool near = false;
         for (int dz = -1; dz <= 1 && !near; ++dz)
             for (int dy = -1; dy <= 1 && !near; ++dy)
@@ -76,19 +85,48 @@ std::vector<Vec3> mesh_wall(const io::ShapeSpec& s, Real dp, int layers) {
                         if (dot(q - p, q - p) < gap * gap) near = true;
                 }
         if (near) continue;
-        out.push_back(p);
+        out.push_back(wp);
         hash[cell(p, 0, 0, 0)].push_back(p);
     }
     return out;
 }
 
-std::vector<Vec3> build_wall(const io::WallSpec& w, const io::CaseSpec& c) {
+// Normal into the fluid and depth behind the surface of the wall point p.
+WallPoint wall_point(const io::WallSpec& w, const io::CaseSpec& c, Vec3 p) {
+    if (w.type == "plane") return {p, w.normal, -dot(p - w.point, w.normal)};
+    const Vec3 lo = w.shape.min, hi = w.shape.max;
+    if (w.type == "open_tank") {
+        Vec3 q = p; // nearest point of the inner (fluid) region
+        for (int d = 0; d < 3; ++d) {
+            if (c.dim == 2 && d == 1) continue;
+            q[d] = std::max(q[d], lo[d]);
+            if (d != 2) q[d] = std::min(q[d], hi[d]);
+        }
+        const Vec3 v = q - p;
+        const Real dist = norm(v);
+        return {p, (1 / dist) * v, dist};
+    }
+    // solid box: nearest face
+    WallPoint best{p, {}, std::numeric_limits<Real>::max()};
+    for (int d = 0; d < 3; ++d) {
+        if (c.dim == 2 && d == 1) continue;
+        Vec3 n;
+        n[d] = -1;
+        if (p[d] - lo[d] < best.d) best = {p, n, p[d] - lo[d]};
+        n[d] = 1;
+        if (hi[d] - p[d] < best.d) best = {p, n, hi[d] - p[d]};
+    }
+    return best;
+}
+
+std::vector<WallPoint> build_wall(const io::WallSpec& w, const io::CaseSpec& c) {
     const Real dp = c.dp;
-    if (w.type == "open_tank")
-        return tank_walls(w.shape.min, w.shape.max, dp, c.dim, w.layers, false);
-    if (w.type == "box") {
+    std::vector<Vec3> pts;
+    if (w.type == "open_tank") {
+        pts = tank_walls(w.shape.min, w.shape.max, dp, c.dim, w.layers, false);
+    } else if (w.type == "box") {
         const Real skin = w.layers * dp;
-        return lattice(w.shape.min, w.shape.max, w.shape.min, dp, c.dim, [&](Vec3 p) {
+        pts = lattice(w.shape.min, w.shape.max, w.shape.min, dp, c.dim, [&](Vec3 p) {
             Real depth = std::numeric_limits<Real>::max();
             for (int d = 0; d < 3; ++d) {
                 if (c.dim == 2 && d == 1) continue;
@@ -96,17 +134,21 @@ std::vector<Vec3> build_wall(const io::WallSpec& w, const io::CaseSpec& c) {
             }
             return depth < skin;
         });
-    }
-    if (w.type == "plane") {
+    } else if (w.type == "plane") {
         const Real thick = w.layers * dp;
-        return lattice(c.domain.lo, c.domain.hi, w.point, dp, c.dim, [&](Vec3 p) {
+        pts = lattice(c.domain.lo, c.domain.hi, w.point, dp, c.dim, [&](Vec3 p) {
             const Real s = dot(p - w.point, w.normal);
             return s < 0 && s >= -thick;
         });
+    } else {
+        if (c.dim == 2)
+            throw InputError(c.file + ": wall '" + w.name + "': STL walls need a 3D case");
+        return mesh_wall(w.shape, dp, w.layers);
     }
-    // For mesh walls, a 2D case uses the mesh's section y = 0 only: not supported.
-    if (c.dim == 2) throw InputError(c.file + ": wall '" + w.name + "': STL walls need a 3D case");
-    return mesh_wall(w.shape, dp, w.layers);
+    std::vector<WallPoint> out;
+    out.reserve(pts.size());
+    for (const Vec3& p : pts) out.push_back(wall_point(w, c, p));
+    return out;
 }
 
 } // namespace
@@ -119,14 +161,14 @@ void build_particles(const io::CaseSpec& c, particles::ParticleSet& set) {
     const Real volume = std::pow(c.dp, c.dim);
     const models::TaitEos eos(sph.rho0, sph.c0, sph.gamma);
     std::vector<Vec3> boundary;
-    std::vector<std::vector<Vec3>> walls;
+    std::vector<std::vector<WallPoint>> walls;
     for (const auto& w : c.walls) {
         walls.push_back(build_wall(w, c));
         if (walls.back().empty())
             throw InputError(fmt::format("{}: wall '{}' produced no particles (check its extent "
                                          "against dp = {} m)",
                                          c.file, w.name, c.dp));
-        boundary.insert(boundary.end(), walls.back().begin(), walls.back().end());
+        for (const WallPoint& wp : walls.back()) boundary.push_back(wp.p);
     }
     const Real g = norm(sph.gravity);
     const Vec3 down = g > 0 ? (1 / g) * sph.gravity : Vec3{0, 0, -1};
@@ -164,7 +206,8 @@ void build_particles(const io::CaseSpec& c, particles::ParticleSet& set) {
     // (within the column's plan extent), so the fluid does not sink at the first step.
     const Real reach = 2 * sph.h;
     for (std::size_t w = 0; w < walls.size(); ++w)
-        for (const Vec3& p : walls[w]) {
+        for (const WallPoint& wp : walls[w]) {
+            const Vec3 p = wp.p;
             Real pressure = 0;
             for (const auto& col : columns)
                 if (p.x >= col.lo.x - reach && p.x <= col.hi.x + reach && p.y >= col.lo.y - reach &&
@@ -172,6 +215,7 @@ void build_particles(const io::CaseSpec& c, particles::ParticleSet& set) {
                     pressure = std::max(pressure, sph.rho0 * g * (col.top + dot(p, down)));
             const Real rho = eos.density(pressure);
             set.add(p, {}, rho, rho * volume, particles::Kind::boundary, std::int16_t(w));
+            set.set_wall(set.size() - 1, wp.n, wp.d);
         }
 }
 

@@ -21,6 +21,7 @@ template <class Kernel, class Viscosity, class Diffusion> struct FluidInteractio
     models::TaitEos eos;
     Vec3 gravity;
     const Real* tau; // SPS stress / rho^2, 6 per particle (xx, xy, xz, yy, yz, zz), or nullptr
+    Real half_dp;    // dp / 2: smallest fluid-wall distance used in the no-slip extrapolation
 
     DF_HD void operator()(Index i) const {
         const Vec3 xi = pv.pos(i), vi = pv.vel(i);
@@ -45,6 +46,7 @@ template <class Kernel, class Viscosity, class Diffusion> struct FluidInteractio
             s.c_i = c_i;
             s.c_j = eos.sound_speed(s.rho_j);
             s.boundary_j = !(fluid_i && fluid_j);
+            s.v_visc = s.boundary_j ? no_slip_velocity(i, j, fluid_i, s.v) : s.v;
             drho += s.mass_j * dot(s.v, s.grad_w);
             const Real prho_j = pv.p[j] / (s.rho_j * s.rho_j);
             acc -= (s.mass_j * (prho_i + prho_j)) * s.grad_w;
@@ -57,6 +59,20 @@ template <class Kernel, class Viscosity, class Diffusion> struct FluidInteractio
         pv.ay[i] = acc.y;
         pv.az[i] = acc.z;
         pv.drho[i] = drho;
+    }
+
+    // No-slip wall velocity for viscous terms (Morris, Fox & Zhu 1997, eq. 30): the wall
+    // particle B carries v_B = -(d_B/d_A) v_A, so v_AB = beta v_A, beta = 1 + d_B/d_A, with d_A
+    // the fluid particle's and d_B the wall particle's distance to the wall surface. d_A is
+    // bounded below by dp/2 (Morris caps beta at 1.5 for particles that get closer than the
+    // lattice allows; our fluid starts dp/2 from the wall, so the bound is on d_A instead).
+    DF_HD Vec3 no_slip_velocity(Index i, Index j, bool fluid_i, Vec3 v) const {
+        const Index b = fluid_i ? j : i, f = fluid_i ? i : j;
+        const Vec3 n{pv.wnx[b], pv.wny[b], pv.wnz[b]};
+        if (pv.wd[b] <= 0) return v; // no wall geometry: plain DBC
+        const Real d_fluid = dot(pv.pos(f) - pv.pos(b), n) - pv.wd[b];
+        const Real beta = 1 + pv.wd[b] / (d_fluid > half_dp ? d_fluid : half_dp);
+        return beta * v;
     }
 
     // (tau_i + tau_j) . g
@@ -76,8 +92,8 @@ template <class Kernel> struct SpsStress {
     particles::ParticleView pv;
     neighbors::GridView grid;
     Kernel kernel;
-    Real smag;  // (C_s dp)^2
-    Real blin;  // 2/3 C_I dp^2
+    Real smag; // (C_s dp)^2
+    Real blin; // 2/3 C_I dp^2
     Real* tau;
 
     DF_HD void operator()(Index i) const {
@@ -98,8 +114,8 @@ template <class Kernel> struct SpsStress {
         const Real sxy = Real(0.5) * (g[0][1] + g[1][0]);
         const Real sxz = Real(0.5) * (g[0][2] + g[2][0]);
         const Real syz = Real(0.5) * (g[1][2] + g[2][1]);
-        const Real ss = 2 * (sxx * sxx + syy * syy + szz * szz) +
-                        4 * (sxy * sxy + sxz * sxz + syz * syz);
+        const Real ss =
+            2 * (sxx * sxx + syy * syy + szz * szz) + 4 * (sxy * sxy + sxz * sxz + syz * syz);
         const Real nu_t = smag * std::sqrt(ss);
         const Real div = sxx + syy + szz;
         const Real iso = -(Real(2) / 3) * nu_t * div - blin * ss;

@@ -12,8 +12,8 @@ namespace debrisflow::sph {
 using particles::Kind;
 
 SphSolver::SphSolver(const SphParams& params, particles::ParticleSet& set, const Domain& domain)
-    : params_(params), set_(set), domain_(domain),
-      eos_(params.rho0, params.c0, params.gamma), models_(SphModels::from_params(params)) {
+    : params_(params), set_(set), domain_(domain), eos_(params.rho0, params.c0, params.gamma),
+      models_(SphModels::from_params(params)) {
     const Real support = std::visit([](const auto& k) { return k.support(); }, models_.kernel);
     grid_.configure(domain.lo, domain.hi, support, params.dim, domain.periodic);
 }
@@ -61,8 +61,15 @@ void SphSolver::compute_forces() {
             using K = std::decay_t<decltype(kernel)>;
             using V = std::decay_t<decltype(visc)>;
             using D = std::decay_t<decltype(diff)>;
-            FluidInteraction<K, V, D> f{pv,  gv,   kernel,          visc,
-                                        diff, eos_, params_.gravity, sps ? tau_.data() : nullptr};
+            FluidInteraction<K, V, D> f{pv,
+                                        gv,
+                                        kernel,
+                                        visc,
+                                        diff,
+                                        eos_,
+                                        params_.gravity,
+                                        sps ? tau_.data() : nullptr,
+                                        Real(0.5) * params_.dp};
             exec::for_each(pv.n, f);
         },
         models_.kernel, models_.viscosity, models_.diffusion);
@@ -72,8 +79,10 @@ namespace {
 // Folds a coordinate back into a periodic direction.
 DF_HD inline Real wrap(Real v, Real lo, Real hi) {
     const Real len = hi - lo;
-    if (v >= hi) v -= len;
-    else if (v < lo) v += len;
+    if (v >= hi)
+        v -= len;
+    else if (v < lo)
+        v += len;
     return v;
 }
 } // namespace
@@ -154,8 +163,8 @@ time::DtLimit SphSolver::stable_dt() const {
         const Real dtf = params_.cfl * std::sqrt(h / amax);
         if (dtf < lim.dt) lim = {dtf, "force"};
     }
-    const Real nu = std::visit([](const auto& v) { return v.kinematic_viscosity(); },
-                               models_.viscosity);
+    const Real nu =
+        std::visit([](const auto& v) { return v.kinematic_viscosity(); }, models_.viscosity);
     if (nu > 0) {
         const Real dtv = Real(0.125) * h * h / nu; // Morris et al. 1997, eq. 19
         if (dtv < lim.dt) lim = {dtv, "viscous"};
@@ -169,8 +178,8 @@ time::DtLimit SphSolver::initial_dt() const {
     const Real g = norm(params_.gravity);
     if (g > 0 && params_.cfl * std::sqrt(h / g) < lim.dt)
         lim = {params_.cfl * std::sqrt(h / g), "force"};
-    const Real nu = std::visit([](const auto& v) { return v.kinematic_viscosity(); },
-                               models_.viscosity);
+    const Real nu =
+        std::visit([](const auto& v) { return v.kinematic_viscosity(); }, models_.viscosity);
     if (nu > 0 && Real(0.125) * h * h / nu < lim.dt) lim = {Real(0.125) * h * h / nu, "viscous"};
     return lim;
 }
@@ -200,8 +209,8 @@ void SphSolver::check_health(Real t) const {
         finite ? "particle left the domain" : "non-finite state (NaN/Inf)", t, s.id[bad],
         s.kind[bad] == std::uint8_t(Kind::fluid) ? "fluid" : "boundary", s.x[bad], s.y[bad],
         s.z[bad], s.vx[bad], s.vy[bad], s.vz[bad], s.rho[bad],
-        finite ? fmt::format("; domain is ({}, {}, {}) to ({}, {}, {}) m", d.lo.x, d.lo.y,
-                             d.lo.z, d.hi.x, d.hi.y, d.hi.z)
+        finite ? fmt::format("; domain is ({}, {}, {}) to ({}, {}, {}) m", d.lo.x, d.lo.y, d.lo.z,
+                             d.hi.x, d.hi.y, d.hi.z)
                : std::string()));
 }
 
