@@ -26,4 +26,4 @@ inline std::string reference(const std::string& rel) {
     return std::string(DEBRISFLOW_SOURCE_DIR) + "/../shared/reference/" + rel;
 }
 
-} // namespace debrisflow::testing
+} // namespace debrisflow::test

@@ -1,0 +1,44 @@
+#pragma once
+// Reading digitised reference curves (CSV or whitespace, '#' comments) and comparing curves.
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace debrisflow::test {
+
+using Curve = std::vector<std::pair<double, double>>;
+
+// First two numeric columns of every data line; header and '#' lines are skipped.
+inline Curve read_curve(const std::string& path) {
+    std::ifstream f(path);
+    if (!f) throw std::runtime_error("missing reference file " + path);
+    Curve c;
+    std::string line;
+    while (std::getline(f, line)) {
+        if (line.empty() || line[0] == '#') continue;
+        std::replace(line.begin(), line.end(), ',', ' ');
+        std::replace(line.begin(), line.end(), '\t', ' ');
+        std::istringstream ss(line);
+        double a, b;
+        if (ss >> a >> b) c.emplace_back(a, b);
+    }
+    return c;
+}
+
+// Linear interpolation of y(x) on a curve sorted by x.
+inline double interpolate(const Curve& c, double x) {
+    if (x <= c.front().first) return c.front().second;
+    for (std::size_t i = 1; i < c.size(); ++i)
+        if (x <= c[i].first) {
+            const auto [x0, y0] = c[i - 1];
+            const auto [x1, y1] = c[i];
+            return x1 > x0 ? y0 + (y1 - y0) * (x - x0) / (x1 - x0) : y1;
+        }
+    return c.back().second;
+}
+
+} // namespace debrisflow::test
