@@ -19,10 +19,12 @@ template <class K> double integral(const K& k, int dim, double h) {
 }
 
 TEST(Kernel, WendlandIntegratesToOne) {
-    for (int dim : {2, 3}) EXPECT_NEAR(integral(kernels::WendlandC2(0.1, dim), dim, 0.1), 1.0, 2e-3);
+    for (int dim : {2, 3})
+        EXPECT_NEAR(integral(kernels::WendlandC2(0.1, dim), dim, 0.1), 1.0, 2e-3);
 }
 TEST(Kernel, CubicSplineIntegratesToOne) {
-    for (int dim : {2, 3}) EXPECT_NEAR(integral(kernels::CubicSpline(0.1, dim), dim, 0.1), 1.0, 2e-3);
+    for (int dim : {2, 3})
+        EXPECT_NEAR(integral(kernels::CubicSpline(0.1, dim), dim, 0.1), 1.0, 2e-3);
 }
 template <class K> void check_gradient(const K& k) {
     for (double r = 0.01; r < 0.2; r += 0.013) {
@@ -40,6 +42,7 @@ TEST(Kernel, GradientMatchesDerivative) {
     check_gradient(kernels::CubicSpline(0.1, 3));
 }
 TEST(Kernel, RegistryNames) {
-    EXPECT_EQ(kernels::KernelRegistry::names(), (std::vector<std::string>{"wendland_c2", "cubic_spline"}));
+    EXPECT_EQ(kernels::KernelRegistry::names(),
+              (std::vector<std::string>{"wendland_c2", "cubic_spline"}));
     EXPECT_THROW(kernels::make_kernel("gaussian", 0.1, 2), std::invalid_argument);
 }

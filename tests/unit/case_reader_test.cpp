@@ -1,0 +1,90 @@
+// Case files: errors name file:line:column and the key; --set overrides any key.
+#include "debrisflow/core/error.hpp"
+#include "run_case.hpp"
+#include <gtest/gtest.h>
+
+using namespace debrisflow;
+
+namespace {
+
+const char* minimal = R"(dp = 0.01
+[time]
+end = 0.1
+[domain]
+min = [-0.1, -0.1]
+max = [1.0, 1.0]
+[sph]
+c0 = 20
+[[fluid]]
+name = "water"
+shape = "box"
+min = [0, 0]
+max = [0.2, 0.2]
+)";
+
+std::string error_of(const std::string& toml, const std::vector<std::string>& sets = {}) {
+    try {
+        test::case_from_toml("case_reader", toml, sets);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+} // namespace
+
+TEST(CaseReader, MinimalCaseReads) {
+    const auto c = test::case_from_toml("minimal", minimal);
+    EXPECT_EQ(c.dim, 2);
+    EXPECT_DOUBLE_EQ(c.dp, 0.01);
+    EXPECT_DOUBLE_EQ(c.sph.h, 0.015); // Wendland default h = 1.5 dp
+    EXPECT_EQ(c.sph.viscosity, "artificial");
+}
+
+TEST(CaseReader, UnknownKeyNamesLineColumnAndSuggestion) {
+    const std::string e = error_of(std::string(minimal) + "[output]\nvtk_evry = 0.1\n");
+    EXPECT_NE(e.find("case_reader.toml:15:"), std::string::npos) << e;
+    EXPECT_NE(e.find("output.vtk_evry"), std::string::npos) << e;
+    EXPECT_NE(e.find("did you mean 'vtk_every'"), std::string::npos) << e;
+}
+
+TEST(CaseReader, WrongTypeAndImpossibleValue) {
+    std::string bad = minimal;
+    bad.replace(bad.find("c0 = 20"), 7, "c0 = \"fast\"");
+    std::string e = error_of(bad);
+    EXPECT_NE(e.find("case_reader.toml:8:6: key 'sph.c0'"), std::string::npos) << e;
+    EXPECT_NE(e.find("expected a number"), std::string::npos) << e;
+    e = error_of(minimal, {"dp=-1"});
+    EXPECT_NE(e.find("key 'dp'"), std::string::npos) << e;
+    EXPECT_NE(e.find("must be > 0"), std::string::npos) << e;
+}
+
+TEST(CaseReader, MissingKeyAndUnknownModel) {
+    std::string bad = minimal;
+    bad.replace(bad.find("dp = 0.01"), 9, "");
+    EXPECT_NE(error_of(bad).find("missing required key 'dp'"), std::string::npos);
+    const std::string e = error_of(minimal, {"sph.viscosity=\"magic\""});
+    EXPECT_NE(e.find("unknown choice \"magic\""), std::string::npos) << e;
+    EXPECT_NE(e.find("\"laminar_sps\""), std::string::npos) << e;
+}
+
+TEST(CaseReader, OverridesApply) {
+    const auto c = test::case_from_toml(
+        "overrides", minimal,
+        {"time.end=0.05", "dp=0.005", "fluid.0.max=[0.3, 0.1]", "sph.kernel=cubic_spline"});
+    EXPECT_DOUBLE_EQ(c.t_end, 0.05);
+    EXPECT_DOUBLE_EQ(c.dp, 0.005);
+    EXPECT_DOUBLE_EQ(c.fluids[0].shape.max.x, 0.3);
+    EXPECT_EQ(c.sph.kernel, "cubic_spline");
+    EXPECT_NEAR(c.sph.h, std::sqrt(3.0) * 0.005, 1e-15);
+    EXPECT_NE(error_of(minimal, {"fluid.3.max=[1,1]"}).find("out of range"), std::string::npos);
+    EXPECT_NE(error_of(minimal, {"sph.colour=1"}).find("unknown key 'sph.colour'"),
+              std::string::npos);
+}
+
+TEST(CaseReader, C0FromCoefficient) {
+    std::string s = minimal;
+    s.replace(s.find("c0 = 20"), 7, "c0_coefficient = 10\nreference_depth = 0.3");
+    const auto c = test::case_from_toml("c0coef", s);
+    EXPECT_NEAR(c.sph.c0, 10 * std::sqrt(9.81 * 0.3), 1e-12);
+}
