@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Command-line contract: output layout, exit codes 2 (bad input) and 3 (unstable run, output
+# kept), error messages naming file:line:column and key.
+set -u
+exe="$1"; src="$2"; out="$3"
+rm -rf "$out"; mkdir -p "$out"
+fail() { echo "FAIL: $*"; exit 1; }
+demo="$src/cases/dambreak2d.toml"
+
+"$exe" run "$demo" --out "$out/run" --set time.end=0.01 --set output.vtk_every=0.005 --quiet \
+    || fail "short run failed"
+for f in case.toml log.txt summary.json vtk/particles.pvd vtk/particles_00000.vtu probes/sensor1.csv; do
+    [ -s "$out/run/$f" ] || fail "missing $f"
+done
+head -1 "$out/run/probes/sensor1.csv" | grep -q '^time \[s\],p \[Pa\]$' || fail "probe header"
+for key in particles steps simulated_time wall_seconds particle_steps_per_second threads probes; do
+    grep -q "\"$key\"" "$out/run/summary.json" || fail "summary lacks $key"
+done
+grep -q 'time.end|end = 0.01' "$out/run/case.toml" || grep -q 'end = 0.01' "$out/run/case.toml" \
+    || fail "resolved case lacks the override"
+
+"$exe" check "$demo" --set sph.viscosty=1 > "$out/bad.txt" 2>&1; rc=$?
+[ $rc -eq 2 ] || fail "unknown key: exit $rc, expected 2"
+grep -q "unknown key 'sph.viscosty'" "$out/bad.txt" || fail "unknown key message: $(cat "$out/bad.txt")"
+
+printf 'dp = 0.01\n[time]\nend = "soon"\n' > "$out/badtype.toml"
+"$exe" check "$out/badtype.toml" > "$out/badtype.txt" 2>&1; rc=$?
+[ $rc -eq 2 ] || fail "wrong type: exit $rc"
+grep -q "badtype.toml:3:7: key 'time.end': expected a number" "$out/badtype.txt" \
+    || fail "wrong type message: $(cat "$out/badtype.txt")"
+
+"$exe" check "$out/missing.toml" > /dev/null 2>&1; rc=$?
+[ $rc -eq 2 ] || fail "missing file: exit $rc"
+
+# A domain that ends just above the water: the splash leaves it and the run must stop (exit 3)
+# with a message saying where, keeping summary.json.
+"$exe" run "$demo" --out "$out/unstable" --set domain.max=[1.66,0.33] --set time.end=0.5 --quiet \
+    > "$out/unstable.txt" 2>&1; rc=$?
+[ $rc -eq 3 ] || fail "unstable run: exit $rc, expected 3"
+grep -q "left the domain" "$out/unstable.txt" || fail "instability message: $(cat "$out/unstable.txt")"
+grep -q '"status": "unstable"' "$out/unstable/summary.json" || fail "unstable summary"
+[ -s "$out/unstable/vtk/particles.pvd" ] || fail "unstable run lost its output"
+echo "cli contract OK"
