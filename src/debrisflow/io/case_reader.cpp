@@ -64,14 +64,15 @@ void read_sph(const ConfigTable& t, CaseSpec& c) {
         if (!(p.c0 > 0)) t.fail("c0_coefficient", "gravity is zero; give c0 directly");
     }
     p.viscosity = t.choice("viscosity", sph::ViscosityRegistry::names(), "artificial");
-    if (p.viscosity == "artificial") {
-        p.alpha = t.real("alpha", 0.01);
-        if (p.alpha < 0) t.fail("alpha", "must be >= 0");
-        p.boundary_factor = t.real("boundary_factor", 1);
-        if (p.boundary_factor < 0) t.fail("boundary_factor", "must be >= 0");
-    } else {
+    // Read for every model so that sweeps may switch models with --set.
+    p.alpha = t.real("alpha", 0.01);
+    if (p.alpha < 0) t.fail("alpha", "must be >= 0");
+    p.boundary_factor = t.real("boundary_factor", 1);
+    if (p.boundary_factor < 0) t.fail("boundary_factor", "must be >= 0");
+    if (p.viscosity != "artificial")
         p.nu = t.positive("nu");
-    }
+    else if (t.has("nu"))
+        p.nu = t.positive("nu");
     p.diffusion = t.choice("diffusion", sph::DiffusionRegistry::names(), "fourtakas");
     p.delta = t.real("delta", 0.1); // read for every model so sweeps may switch models
     if (p.delta < 0 || p.delta > 1) t.fail("delta", "must be within [0, 1]");

@@ -7,10 +7,15 @@ namespace debrisflow::models {
 
 using sph::PairState;
 
+// Each model gives both sides of a fluid-fluid pair: drho_i += d.first, drho_j += d.second.
+struct DensityRates {
+    Real i, j;
+};
+
 // No density diffusion: plain continuity equation.
 struct NoDiffusion {
     static constexpr const char* name = "none";
-    DF_HD Real drho(const PairState&) const { return 0; }
+    DF_HD DensityRates pair(const PairState&) const { return {0, 0}; }
 };
 
 // delta-SPH density diffusion (Molteni & Colagrossi 2009; Antuono et al. 2010 eq. 6):
@@ -19,10 +24,10 @@ struct MolteniColagrossi {
     static constexpr const char* name = "molteni";
     Real delta = 0.1, h = 0, c0 = 0, eta2 = 0;
 
-    DF_HD Real drho(const PairState& s) const {
+    DF_HD DensityRates pair(const PairState& s) const {
         // (x_j - x_i).grad_i W = -r^2 f
-        const Real psi = 2 * (s.rho_j - s.rho_i) * (-s.r2 * s.f) / (s.r2 + eta2);
-        return delta * h * c0 * psi * s.mass_j / s.rho_j;
+        const Real k = 2 * delta * h * c0 * (-s.r2 * s.f) / (s.r2 + eta2) * (s.rho_j - s.rho_i);
+        return {k * s.mass_j / s.rho_j, -k * s.mass_i / s.rho_i};
     }
 };
 
@@ -34,15 +39,19 @@ struct Fourtakas {
     Real delta = 0.1, h = 0, c0 = 0, eta2 = 0;
     Real rho0 = 1000, inv_gamma = 1.0 / 7, g_over_b[3] = {0, 0, 0}; // rho0 g / B
 
-    DF_HD Real drho(const PairState& s) const {
-        // g.(x_j - x_i) = -g.r
+    DF_HD DensityRates pair(const PairState& s) const {
+        // g.(x_j - x_i) = -g.r, scaled by rho0 / B
         const Real gr = -(g_over_b[0] * s.r.x + g_over_b[1] * s.r.y + g_over_b[2] * s.r.z);
+        const Real k = 2 * delta * h * c0 * (-s.r2 * s.f) / (s.r2 + eta2);
+        return {k * (s.rho_j - s.rho_i - hydrostatic(gr)) * s.mass_j / s.rho_j,
+                k * (s.rho_i - s.rho_j - hydrostatic(-gr)) * s.mass_i / s.rho_i};
+    }
+    // rho^H_b - rho^H_a for rho0 g.(x_b - x_a) / B = x
+    DF_HD Real hydrostatic(Real x) const {
         // (1 + x)^a - 1 by its Taylor series to third order: |x| <= 2 h gamma g / c0^2 << 1 for
         // a pair, so the truncation (a (a-1)(a-2)(a-3)/24 x^4) is below 1e-9 relative.
         const Real a = inv_gamma;
-        const Real hyd = rho0 * a * gr * (1 + Real(0.5) * (a - 1) * gr * (1 + (a - 2) / 3 * gr));
-        const Real psi = 2 * (s.rho_j - s.rho_i - hyd) * (-s.r2 * s.f) / (s.r2 + eta2);
-        return delta * h * c0 * psi * s.mass_j / s.rho_j;
+        return rho0 * a * x * (1 + Real(0.5) * (a - 1) * x * (1 + (a - 2) / 3 * x));
     }
 };
 

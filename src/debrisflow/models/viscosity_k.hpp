@@ -6,6 +6,8 @@ namespace debrisflow::models {
 
 using sph::PairState;
 
+// Every model returns G_ij with a_i += m_j G_ij and a_j -= m_i G_ij (momentum-conserving).
+
 // Artificial viscosity (Monaghan 1992, eq. 4.1): Pi_ij = -alpha cbar mu_ij / rhobar for
 // v_ij.r_ij < 0, mu_ij = h v_ij.r_ij / (r^2 + 0.01 h^2); a_i -= sum m_j Pi_ij grad W.
 // alpha is multiplied by `boundary_factor` for fluid-boundary pairs.
@@ -20,7 +22,7 @@ struct ArtificialViscosity {
         const Real a = s.boundary_j ? alpha * boundary_factor : alpha;
         const Real mu = h * vr / (s.r2 + eta2);
         const Real pi = -a * Real(0.5) * (s.c_i + s.c_j) * mu / (Real(0.5) * (s.rho_i + s.rho_j));
-        return (-s.mass_j * pi) * s.grad_w;
+        return (-pi) * s.grad_w;
     }
     // Largest kinematic viscosity for the viscous time-step limit (none for this model).
     Real kinematic_viscosity() const { return 0; }
@@ -35,7 +37,7 @@ struct LaminarViscosity {
 
     DF_HD Vec3 acceleration(const PairState& s) const {
         const Real mu2 = 2 * rho0 * nu;
-        const Real k = s.mass_j * mu2 * s.r2 * s.f / (s.rho_i * s.rho_j * (s.r2 + eta2));
+        const Real k = mu2 * s.r2 * s.f / (s.rho_i * s.rho_j * (s.r2 + eta2));
         return k * s.v_visc;
     }
     Real kinematic_viscosity() const { return nu; }

@@ -1,4 +1,5 @@
 #pragma once
+#include "debrisflow/models/density_diffusion_k.hpp"
 #include "debrisflow/models/eos_tait_k.hpp"
 #include "debrisflow/neighbors/grid_view_k.hpp"
 #include "debrisflow/particles/particle_set.hpp"
@@ -6,59 +7,53 @@
 
 namespace debrisflow::sph {
 
-// WCSPH particle-i update (host/device): continuity (Monaghan 1992 eq. 2.3)
-//   drho_i/dt = sum m_j v_ij . grad W_ij + density diffusion,
-// momentum (Monaghan 1992 eq. 3.1)
-//   dv_i/dt = -sum m_j (p_i/rho_i^2 + p_j/rho_j^2) grad W_ij + viscous terms + g.
+// The WCSPH terms of one pair (i, j), written once for the gather loop (device) and the
+// half-pair-list scatter loop (host):
+//   continuity (Monaghan 1992 eq. 2.3): drho_i/dt = sum m_j v_ij . grad W_ij + diffusion
+//   momentum (Monaghan 1992 eq. 3.1):   dv_i/dt = -sum m_j (p_i/rho_i^2 + p_j/rho_j^2) grad W_ij
+//                                                 + viscous terms + g
 // Boundary (DBC, Crespo et al. 2007) particles get drho from fluid neighbours and the
-// acceleration exerted on them by the fluid (used for wall loads); they do not move.
-template <class Kernel, class Viscosity, class Diffusion> struct FluidInteraction {
+// acceleration the fluid exerts on them (for wall loads); they do not move. Boundary-boundary
+// pairs contribute nothing.
+template <class Kernel, class Viscosity, class Diffusion> struct PairTerms {
     particles::ParticleView pv;
-    neighbors::GridView grid;
     Kernel kernel;
     Viscosity visc;
     Diffusion diff;
-    models::TaitEos eos;
-    Vec3 gravity;
-    const Real* tau; // SPS stress / rho^2, 6 per particle (xx, xy, xz, yy, yz, zz), or nullptr
-    Real half_dp;    // dp / 2: smallest fluid-wall distance used in the no-slip extrapolation
+    const Real* prho; // p / rho^2 per particle
+    const Real* cs;   // sound speed per particle
+    const Real* tau;  // SPS stress / rho^2, 6 per particle (xx, xy, xz, yy, yz, zz), or nullptr
+    Real half_dp;     // dp / 2: smallest fluid-wall distance used in the no-slip extrapolation
 
-    DF_HD void operator()(Index i) const {
-        const Vec3 xi = pv.pos(i), vi = pv.vel(i);
-        const Real rho_i = pv.rho[i], p_i = pv.p[i];
-        const Real prho_i = p_i / (rho_i * rho_i);
-        const Real c_i = eos.sound_speed(rho_i);
-        const bool fluid_i = pv.is_fluid(i);
-        Vec3 acc{};
-        Real drho = 0;
-        grid.for_each_neighbor(i, xi, pv.x, pv.y, pv.z, [&](Index j, Vec3 r, Real r2) {
-            const bool fluid_j = pv.is_fluid(j);
-            if (!fluid_i && !fluid_j) return;
-            PairState s;
-            s.r = r;
-            s.r2 = r2;
-            s.f = kernel.grad_over_r(std::sqrt(r2));
-            s.grad_w = s.f * r;
-            s.v = vi - pv.vel(j);
-            s.mass_j = pv.mass[j];
-            s.rho_i = rho_i;
-            s.rho_j = pv.rho[j];
-            s.c_i = c_i;
-            s.c_j = eos.sound_speed(s.rho_j);
-            s.boundary_j = !(fluid_i && fluid_j);
-            s.v_visc = s.boundary_j ? no_slip_velocity(i, j, fluid_i, s.v) : s.v;
-            drho += s.mass_j * dot(s.v, s.grad_w);
-            const Real prho_j = pv.p[j] / (s.rho_j * s.rho_j);
-            acc -= (s.mass_j * (prho_i + prho_j)) * s.grad_w;
-            acc += visc.acceleration(s);
-            if (fluid_i && fluid_j) drho += diff.drho(s);
-            if (tau) acc += s.mass_j * tau_dot(i, j, s.grad_w);
-        });
-        if (fluid_i) acc += gravity;
-        pv.ax[i] = acc.x;
-        pv.ay[i] = acc.y;
-        pv.az[i] = acc.z;
-        pv.drho[i] = drho;
+    // a_i += m_j g, a_j -= m_i g; drho_i += m_j cont + d.i, drho_j += m_i cont + d.j
+    struct Result {
+        Vec3 g;
+        Real cont;
+        models::DensityRates d;
+    };
+
+    DF_HD Result operator()(Index i, Index j, Vec3 r, Real r2) const {
+        const bool fluid_i = pv.is_fluid(i), fluid_j = pv.is_fluid(j);
+        PairState s;
+        s.r = r;
+        s.r2 = r2;
+        s.f = kernel.grad_over_r(std::sqrt(r2));
+        s.grad_w = s.f * r;
+        s.v = pv.vel(i) - pv.vel(j);
+        s.mass_i = pv.mass[i];
+        s.mass_j = pv.mass[j];
+        s.rho_i = pv.rho[i];
+        s.rho_j = pv.rho[j];
+        s.c_i = cs[i];
+        s.c_j = cs[j];
+        s.boundary_j = !(fluid_i && fluid_j);
+        s.v_visc = s.boundary_j ? no_slip_velocity(i, j, fluid_i, s.v) : s.v;
+        Result out;
+        out.cont = dot(s.v, s.grad_w);
+        out.g = (-(prho[i] + prho[j])) * s.grad_w + visc.acceleration(s);
+        if (tau) out.g += tau_dot(i, j, s.grad_w);
+        out.d = s.boundary_j ? models::DensityRates{0, 0} : diff.pair(s);
+        return out;
     }
 
     // No-slip wall velocity for viscous terms (Morris, Fox & Zhu 1997, eq. 30): the wall
@@ -68,8 +63,8 @@ template <class Kernel, class Viscosity, class Diffusion> struct FluidInteractio
     // lattice allows; our fluid starts dp/2 from the wall, so the bound is on d_A instead).
     DF_HD Vec3 no_slip_velocity(Index i, Index j, bool fluid_i, Vec3 v) const {
         const Index b = fluid_i ? j : i, f = fluid_i ? i : j;
-        const Vec3 n{pv.wnx[b], pv.wny[b], pv.wnz[b]};
         if (pv.wd[b] <= 0) return v; // no wall geometry: plain DBC
+        const Vec3 n{pv.wnx[b], pv.wny[b], pv.wnz[b]};
         const Real d_fluid = dot(pv.pos(f) - pv.pos(b), n) - pv.wd[b];
         const Real beta = 1 + pv.wd[b] / (d_fluid > half_dp ? d_fluid : half_dp);
         return beta * v;
@@ -83,6 +78,32 @@ template <class Kernel, class Viscosity, class Diffusion> struct FluidInteractio
         const Real yy = a[3] + b[3], yz = a[4] + b[4], zz = a[5] + b[5];
         return {xx * g.x + xy * g.y + xz * g.z, xy * g.x + yy * g.y + yz * g.z,
                 xz * g.x + yz * g.y + zz * g.z};
+    }
+};
+
+// Gather form (one thread per particle i, all neighbours from the cell grid): the layout a
+// GPU backend uses. Writes a_i (with gravity for fluid) and drho_i.
+template <class Kernel, class Viscosity, class Diffusion> struct FluidInteraction {
+    PairTerms<Kernel, Viscosity, Diffusion> terms;
+    neighbors::GridView grid;
+    Vec3 gravity;
+
+    DF_HD void operator()(Index i) const {
+        const auto& pv = terms.pv;
+        const bool fluid_i = pv.is_fluid(i);
+        Vec3 acc{};
+        Real drho = 0;
+        grid.for_each_neighbor(i, pv.pos(i), pv.x, pv.y, pv.z, [&](Index j, Vec3 r, Real r2) {
+            if (!fluid_i && !pv.is_fluid(j)) return;
+            const auto t = terms(i, j, r, r2);
+            acc += pv.mass[j] * t.g;
+            drho += pv.mass[j] * t.cont + t.d.i;
+        });
+        if (fluid_i) acc += gravity;
+        pv.ax[i] = acc.x;
+        pv.ay[i] = acc.y;
+        pv.az[i] = acc.z;
+        pv.drho[i] = drho;
     }
 };
 

@@ -11,7 +11,7 @@ struct PairState {
     Vec3 v_visc; // v_ij for viscous terms (no-slip extrapolation at walls, Morris 1997)
     Vec3 grad_w; // grad_i W_ij
     Real f;      // (dW/dr)/r, so grad_w = r * f
-    Real mass_j;
+    Real mass_i, mass_j;
     Real rho_i, rho_j;
     Real c_i, c_j;
     bool boundary_j; // j is a boundary particle

@@ -14,63 +14,144 @@ using particles::Kind;
 SphSolver::SphSolver(const SphParams& params, particles::ParticleSet& set, const Domain& domain)
     : params_(params), set_(set), domain_(domain), eos_(params.rho0, params.c0, params.gamma),
       models_(SphModels::from_params(params)) {
-    const Real support = std::visit([](const auto& k) { return k.support(); }, models_.kernel);
-    grid_.configure(domain.lo, domain.hi, support, params.dim, domain.periodic);
+    support_ = std::visit([](const auto& k) { return k.support(); }, models_.kernel);
+    // The pair list holds pairs up to support + skin and is rebuilt once a particle has moved
+    // skin/2; 10 % of the support keeps the list ~1.3x the true pairs in 3D.
+    skin_ = Real(0.1) * support_;
+    grid_.configure(domain.lo, domain.hi, support_ + skin_, params.dim, domain.periodic);
 }
 
-void SphSolver::update_neighbors(bool reorder) {
+Real SphSolver::max_displacement() const {
+    const auto& s = set_;
+    const auto g = grid_.view();
+    const Real *xr = xref_.data(), *yr = yref_.data(), *zr = zref_.data();
+    auto pv = const_cast<particles::ParticleSet&>(s).view();
+    return exec::max_of(pv.n, [=](Index i) {
+        const Vec3 d = g.separation(pv.pos(i), {xr[i], yr[i], zr[i]});
+        return dot(d, d);
+    });
+}
+
+void SphSolver::update_neighbors(bool allow_reorder) {
     ScopedTimer timer(t_neighbors_);
     grid_.build(set_.x.data(), set_.y.data(), set_.z.data(), set_.size());
-    if (reorder) {
+    const bool stale = !list_valid_ || xref_.size() != std::size_t(set_.size()) ||
+                       4 * max_displacement() > skin_ * skin_;
+    if (!stale) return;
+    if (allow_reorder && params_.reorder_every > 0) {
         set_.permute(grid_.order());
         grid_.build(set_.x.data(), set_.y.data(), set_.z.data(), set_.size());
     }
+    list_.build(grid_.view(), set_.view());
+    xref_ = set_.x;
+    yref_ = set_.y;
+    zref_ = set_.z;
+    list_valid_ = true;
+    ++list_builds_;
+}
+
+void SphSolver::compute_sps_stress() {
+    auto pv = set_.view();
+    tau_.resize(6 * std::size_t(pv.n));
+    const auto& v = std::get<models::LaminarSpsViscosity>(models_.viscosity);
+    const auto gv = grid_.view();
+    std::visit(
+        [&](const auto& kernel) {
+            using K = std::decay_t<decltype(kernel)>;
+            const Real dp2 = params_.dp * params_.dp;
+            SpsStress<K> f{pv,
+                           gv,
+                           kernel,
+                           v.smagorinsky * v.smagorinsky * dp2,
+                           Real(2) / 3 * v.blin * dp2,
+                           tau_.data()};
+            exec::for_each(pv.n, f);
+        },
+        models_.kernel);
 }
 
 void SphSolver::update_pressure() {
     auto pv = set_.view();
+    prho_.resize(std::size_t(pv.n));
+    cs_.resize(std::size_t(pv.n));
+    Real *prho = prho_.data(), *cs = cs_.data();
     const auto eos = eos_;
-    exec::for_each(pv.n, [=](Index i) { pv.p[i] = eos.pressure(pv.rho[i]); });
+    exec::for_each(pv.n, [=](Index i) {
+        const Real p = eos.pressure(pv.rho[i]);
+        pv.p[i] = p;
+        prho[i] = p / (pv.rho[i] * pv.rho[i]);
+        cs[i] = eos.sound_speed(pv.rho[i]);
+    });
 }
 
 void SphSolver::compute_forces() {
     ScopedTimer timer(t_forces_);
     update_pressure();
+    const bool sps = std::holds_alternative<models::LaminarSpsViscosity>(models_.viscosity);
+    if (sps) compute_sps_stress();
     auto pv = set_.view();
     const auto gv = grid_.view();
-    const bool sps = std::holds_alternative<models::LaminarSpsViscosity>(models_.viscosity);
-    if (sps) {
-        tau_.resize(6 * std::size_t(pv.n));
-        const auto& v = std::get<models::LaminarSpsViscosity>(models_.viscosity);
-        std::visit(
-            [&](const auto& kernel) {
-                using K = std::decay_t<decltype(kernel)>;
-                const Real dp2 = params_.dp * params_.dp;
-                SpsStress<K> f{pv,
-                               gv,
-                               kernel,
-                               v.smagorinsky * v.smagorinsky * dp2,
-                               Real(2) / 3 * v.blin * dp2,
-                               tau_.data()};
-                exec::for_each(pv.n, f);
-            },
-            models_.kernel);
-    }
+    const Real support2 = support_ * support_;
+    const Vec3 gravity = params_.gravity;
     std::visit(
         [&](const auto& kernel, const auto& visc, const auto& diff) {
             using K = std::decay_t<decltype(kernel)>;
             using V = std::decay_t<decltype(visc)>;
             using D = std::decay_t<decltype(diff)>;
-            FluidInteraction<K, V, D> f{pv,
-                                        gv,
-                                        kernel,
-                                        visc,
-                                        diff,
-                                        eos_,
-                                        params_.gravity,
-                                        sps ? tau_.data() : nullptr,
-                                        Real(0.5) * params_.dp};
-            exec::for_each(pv.n, f);
+            const PairTerms<K, V, D> terms{pv,
+                                           kernel,
+                                           visc,
+                                           diff,
+                                           prho_.data(),
+                                           cs_.data(),
+                                           sps ? tau_.data() : nullptr,
+                                           Real(0.5) * params_.dp};
+            exec::for_each_pair(
+                list_, pv.n, buffers_,
+                [=](Index i, Index j, Vec3& acc_i, Real& drho_i, Real* out_j) {
+                    const Vec3 r = gv.separation(pv.pos(i), pv.pos(j));
+                    const Real r2 = dot(r, r);
+                    if (r2 >= support2) return;
+                    const auto t = terms(i, j, r, r2);
+                    const Real mi = pv.mass[i], mj = pv.mass[j];
+                    acc_i += mj * t.g;
+                    drho_i += mj * t.cont + t.d.i;
+                    out_j[0] -= mi * t.g.x;
+                    out_j[1] -= mi * t.g.y;
+                    out_j[2] -= mi * t.g.z;
+                    out_j[3] += mi * t.cont + t.d.j;
+                },
+                [=](Index i, Vec3 acc, Real drho) {
+                    if (pv.is_fluid(i)) acc += gravity;
+                    pv.ax[i] = acc.x;
+                    pv.ay[i] = acc.y;
+                    pv.az[i] = acc.z;
+                    pv.drho[i] = drho;
+                });
+        },
+        models_.kernel, models_.viscosity, models_.diffusion);
+}
+
+void SphSolver::compute_forces_gather() {
+    update_pressure();
+    const bool sps = std::holds_alternative<models::LaminarSpsViscosity>(models_.viscosity);
+    if (sps) compute_sps_stress();
+    auto pv = set_.view();
+    const auto gv = grid_.view();
+    std::visit(
+        [&](const auto& kernel, const auto& visc, const auto& diff) {
+            using K = std::decay_t<decltype(kernel)>;
+            using V = std::decay_t<decltype(visc)>;
+            using D = std::decay_t<decltype(diff)>;
+            const PairTerms<K, V, D> terms{pv,
+                                           kernel,
+                                           visc,
+                                           diff,
+                                           prho_.data(),
+                                           cs_.data(),
+                                           sps ? tau_.data() : nullptr,
+                                           Real(0.5) * params_.dp};
+            exec::for_each(pv.n, FluidInteraction<K, V, D>{terms, gv, params_.gravity});
         },
         models_.kernel, models_.viscosity, models_.diffusion);
 }
@@ -225,6 +306,7 @@ void SphSolver::remove_group(std::int16_t group) {
     for (Index i = 0; i < set_.size(); ++i)
         keep[i] = !(set_.kind[i] == std::uint8_t(Kind::boundary) && set_.group[i] == group);
     set_.compact(keep);
+    list_valid_ = false;
 }
 
 } // namespace debrisflow::sph

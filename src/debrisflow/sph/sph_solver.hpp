@@ -1,6 +1,8 @@
 #pragma once
+#include "debrisflow/exec/pair_scatter.hpp"
 #include "debrisflow/models/eos_tait_k.hpp"
 #include "debrisflow/neighbors/cell_grid.hpp"
+#include "debrisflow/neighbors/pair_list.hpp"
 #include "debrisflow/particles/particle_set.hpp"
 #include "debrisflow/sph/sph_models.hpp"
 #include "debrisflow/time/phase.hpp"
@@ -38,18 +40,33 @@ public:
     const particles::ParticleSet& particles() const { return set_; }
     // Removes all boundary particles of wall group `group` (a gate lifting).
     void remove_group(std::int16_t group);
+    // Pair-list statistics: builds so far, pairs in the list, kernel support.
+    long list_builds() const { return list_builds_; }
+    const neighbors::PairList& pair_list() const { return list_; }
+    Real support() const { return support_; }
+    // Force evaluation by the gather loop over the cell grid (the GPU layout); the scatter
+    // loop over the half pair list (compute_forces) must give the same result.
+    void compute_forces_gather();
     // Initial time-step estimate from the parameters alone (before any motion).
     time::DtLimit initial_dt() const;
 
 private:
     void update_pressure();
+    void compute_sps_stress();
+    Real max_displacement() const;
     SphParams params_;
     particles::ParticleSet& set_;
     Domain domain_;
     models::TaitEos eos_;
     SphModels models_;
     neighbors::CellGrid grid_;
-    std::vector<Real> tau_;
+    std::vector<Real> tau_, prho_, cs_;
+    neighbors::PairList list_;
+    exec::ScatterBuffers buffers_;
+    std::vector<Real> xref_, yref_, zref_; // positions at the last pair-list build
+    Real support_ = 0, skin_ = 0;
+    bool list_valid_ = false;
+    long list_builds_ = 0;
     std::vector<Real> x0_, y0_, z0_, vx0_, vy0_, vz0_, rho0_; // state at t_n (predictor)
     double t_neighbors_ = 0, t_forces_ = 0, t_integrate_ = 0;
 };

@@ -1,0 +1,59 @@
+#pragma once
+#include "debrisflow/core/vec3_k.hpp"
+#include "debrisflow/neighbors/pair_list.hpp"
+#include <algorithm>
+#include <omp.h>
+#include <vector>
+
+namespace debrisflow::exec {
+
+// Per-thread accumulation buffers for symmetric pair loops: (x, y, z, scalar) per particle.
+struct ScatterBuffers {
+    std::vector<std::vector<Real>> per_thread;
+};
+
+// Runs pair(i, j) -> (vec_i, s_i, vec_j, s_j) over every pair of a half list, each pair once,
+// and sums the contributions of both particles: out(i, vec, s) receives the totals. Threads
+// write their own buffers (no atomics), which are summed at the end. `accept(i, j)` returns
+// false to skip a pair (e.g. beyond the kernel support).
+template <class Pair, class Out>
+void for_each_pair(const neighbors::PairList& list, Index n, ScatterBuffers& buf, const Pair& pair,
+                   const Out& out) {
+    const int nt = omp_get_max_threads();
+    buf.per_thread.resize(std::size_t(nt));
+    for (auto& b : buf.per_thread) b.resize(4 * std::size_t(n));
+    const Index* nb = list.neighbors();
+#pragma omp parallel
+    {
+        Real* b = buf.per_thread[std::size_t(omp_get_thread_num())].data();
+        std::fill(b, b + 4 * std::size_t(n), Real(0)); // each thread clears its own buffer
+#pragma omp for schedule(dynamic, 256)
+        for (Index i = 0; i < n; ++i) {
+            Vec3 vi{};
+            Real si = 0;
+            const Index* js = nb + list.begin(i);
+            const Index c = list.count(i);
+            for (Index k = 0; k < c; ++k) {
+                const Index j = js[k];
+                pair(i, j, vi, si, b + 4 * j);
+            }
+            b[4 * i] += vi.x;
+            b[4 * i + 1] += vi.y;
+            b[4 * i + 2] += vi.z;
+            b[4 * i + 3] += si;
+        }
+#pragma omp for schedule(static)
+        for (Index i = 0; i < n; ++i) {
+            Vec3 v{};
+            Real s = 0;
+            for (int t = 0; t < nt; ++t) {
+                const Real* bt = buf.per_thread[std::size_t(t)].data() + 4 * i;
+                v += Vec3{bt[0], bt[1], bt[2]};
+                s += bt[3];
+            }
+            out(i, v, s);
+        }
+    }
+}
+
+} // namespace debrisflow::exec
