@@ -12,13 +12,13 @@ struct ScatterBuffers {
     std::vector<std::vector<Real>> per_thread;
 };
 
-// Runs pair(i, j) -> (vec_i, s_i, vec_j, s_j) over every pair of a half list, each pair once,
-// and sums the contributions of both particles: out(i, vec, s) receives the totals. Threads
-// write their own buffers (no atomics), which are summed at the end. `accept(i, j)` returns
-// false to skip a pair (e.g. beyond the kernel support).
-template <class Pair, class Out>
-void for_each_pair(const neighbors::PairList& list, Index n, ScatterBuffers& buf, const Pair& pair,
-                   const Out& out) {
+// Runs pair(load(i), i, j, vec_i, s_i, out_j) over every pair of a half list, each pair once:
+// the pair adds particle i's contribution to (vec_i, s_i) and particle j's to out_j[0..3].
+// out(i, vec, s) then receives each particle's totals. Threads write their own buffers (no
+// atomics), which are summed at the end; load(i) fetches particle i's data once.
+template <class Load, class Pair, class Out>
+void for_each_pair(const neighbors::PairList& list, Index n, ScatterBuffers& buf, const Load& load,
+                   const Pair& pair, const Out& out) {
     const int nt = omp_get_max_threads();
     buf.per_thread.resize(std::size_t(nt));
     for (auto& b : buf.per_thread) b.resize(4 * std::size_t(n));
@@ -33,9 +33,10 @@ void for_each_pair(const neighbors::PairList& list, Index n, ScatterBuffers& buf
             Real si = 0;
             const Index* js = nb + list.begin(i);
             const Index c = list.count(i);
+            const auto data_i = load(i);
             for (Index k = 0; k < c; ++k) {
                 const Index j = js[k];
-                pair(i, j, vi, si, b + 4 * j);
+                pair(data_i, i, j, vi, si, b + 4 * j);
             }
             b[4 * i] += vi.x;
             b[4 * i + 1] += vi.y;

@@ -14,6 +14,7 @@ using sph::PairState;
 struct ArtificialViscosity {
     static constexpr const char* name = "artificial";
     static constexpr bool needs_velocity_gradient = false;
+    static constexpr bool no_slip_walls = false; // uses v_ij as is
     Real alpha = 0.01, boundary_factor = 1, h = 0, eta2 = 0;
 
     DF_HD Vec3 acceleration(const PairState& s) const {
@@ -33,6 +34,7 @@ struct ArtificialViscosity {
 struct LaminarViscosity {
     static constexpr const char* name = "laminar";
     static constexpr bool needs_velocity_gradient = false;
+    static constexpr bool no_slip_walls = true; // uses v_visc (Morris wall extrapolation)
     Real nu = 1e-6, rho0 = 1000, eta2 = 0;
 
     DF_HD Vec3 acceleration(const PairState& s) const {
@@ -50,6 +52,7 @@ struct LaminarViscosity {
 struct LaminarSpsViscosity {
     static constexpr const char* name = "laminar_sps";
     static constexpr bool needs_velocity_gradient = true;
+    static constexpr bool no_slip_walls = true;
     Real nu = 1e-6, rho0 = 1000, eta2 = 0;
     Real smagorinsky = 0.12, blin = 0.0066; // C_s and C_I of Dalrymple & Rogers
 

@@ -32,26 +32,42 @@ template <class Kernel, class Viscosity, class Diffusion> struct PairTerms {
         models::DensityRates d;
     };
 
+    // Per-particle data of one side of a pair, loaded once per particle in the pair loops.
+    struct Side {
+        Vec3 x, v;
+        Real rho, prho, c, m;
+        bool fluid;
+    };
+    DF_HD Side side(Index i) const {
+        return {pv.pos(i), pv.vel(i), pv.rho[i], prho[i], cs[i], pv.mass[i], pv.is_fluid(i)};
+    }
+
     DF_HD Result operator()(Index i, Index j, Vec3 r, Real r2) const {
-        const bool fluid_i = pv.is_fluid(i), fluid_j = pv.is_fluid(j);
+        return (*this)(side(i), i, side(j), j, r, r2);
+    }
+
+    DF_HD Result operator()(const Side& a, Index i, const Side& b, Index j, Vec3 r, Real r2) const {
         PairState s;
         s.r = r;
         s.r2 = r2;
         s.f = kernel.grad_over_r(std::sqrt(r2));
         s.grad_w = s.f * r;
-        s.v = pv.vel(i) - pv.vel(j);
-        s.mass_i = pv.mass[i];
-        s.mass_j = pv.mass[j];
-        s.rho_i = pv.rho[i];
-        s.rho_j = pv.rho[j];
-        s.c_i = cs[i];
-        s.c_j = cs[j];
-        s.boundary_j = !(fluid_i && fluid_j);
-        s.v_visc = s.boundary_j ? no_slip_velocity(i, j, fluid_i, s.v) : s.v;
+        s.v = a.v - b.v;
+        s.mass_i = a.m;
+        s.mass_j = b.m;
+        s.rho_i = a.rho;
+        s.rho_j = b.rho;
+        s.c_i = a.c;
+        s.c_j = b.c;
+        s.boundary_j = !(a.fluid && b.fluid);
+        if constexpr (Viscosity::no_slip_walls)
+            s.v_visc = s.boundary_j ? no_slip_velocity(a.fluid ? b : a, a.fluid ? j : i,
+                                                       a.fluid ? a.x : b.x, s.v)
+                                    : s.v;
         Result out;
         out.cont = dot(s.v, s.grad_w);
-        out.g = (-(prho[i] + prho[j])) * s.grad_w + visc.acceleration(s);
-        if (tau) out.g += tau_dot(i, j, s.grad_w);
+        out.g = (-(a.prho + b.prho)) * s.grad_w + visc.acceleration(s);
+        if constexpr (Viscosity::needs_velocity_gradient) out.g += tau_dot(i, j, s.grad_w);
         out.d = s.boundary_j ? models::DensityRates{0, 0} : diff.pair(s);
         return out;
     }
@@ -61,11 +77,10 @@ template <class Kernel, class Viscosity, class Diffusion> struct PairTerms {
     // the fluid particle's and d_B the wall particle's distance to the wall surface. d_A is
     // bounded below by dp/2 (Morris caps beta at 1.5 for particles that get closer than the
     // lattice allows; our fluid starts dp/2 from the wall, so the bound is on d_A instead).
-    DF_HD Vec3 no_slip_velocity(Index i, Index j, bool fluid_i, Vec3 v) const {
-        const Index b = fluid_i ? j : i, f = fluid_i ? i : j;
+    DF_HD Vec3 no_slip_velocity(const Side& wall, Index b, Vec3 x_fluid, Vec3 v) const {
         if (pv.wd[b] <= 0) return v; // no wall geometry: plain DBC
         const Vec3 n{pv.wnx[b], pv.wny[b], pv.wnz[b]};
-        const Real d_fluid = dot(pv.pos(f) - pv.pos(b), n) - pv.wd[b];
+        const Real d_fluid = dot(x_fluid - wall.x, n) - pv.wd[b];
         const Real beta = 1 + pv.wd[b] / (d_fluid > half_dp ? d_fluid : half_dp);
         return beta * v;
     }

@@ -106,14 +106,16 @@ void SphSolver::compute_forces() {
                                            cs_.data(),
                                            sps ? tau_.data() : nullptr,
                                            Real(0.5) * params_.dp};
+            using Side = typename PairTerms<K, V, D>::Side;
             exec::for_each_pair(
-                list_, pv.n, buffers_,
-                [=](Index i, Index j, Vec3& acc_i, Real& drho_i, Real* out_j) {
-                    const Vec3 r = gv.separation(pv.pos(i), pv.pos(j));
+                list_, pv.n, buffers_, [=](Index i) { return terms.side(i); },
+                [=](const Side& a, Index i, Index j, Vec3& acc_i, Real& drho_i, Real* out_j) {
+                    const Side b = terms.side(j);
+                    const Vec3 r = gv.separation(a.x, b.x);
                     const Real r2 = dot(r, r);
                     if (r2 >= support2) return;
-                    const auto t = terms(i, j, r, r2);
-                    const Real mi = pv.mass[i], mj = pv.mass[j];
+                    const auto t = terms(a, i, b, j, r, r2);
+                    const Real mi = a.m, mj = b.m;
                     acc_i += mj * t.g;
                     drho_i += mj * t.cont + t.d.i;
                     out_j[0] -= mi * t.g.x;
