@@ -148,6 +148,7 @@ def main():
     plt.xlabel("T = t sqrt(g/H)")
     plt.ylabel("p / (rho g H)")
     plt.xlim(0, 7)
+    plt.ylim(-0.5, 4)  # the simulated impact spike (acoustic, ~20) is clipped
     plt.legend()
     plt.title("Pressure at sensor 1 (y = 3 mm)")
     plt.tight_layout()
