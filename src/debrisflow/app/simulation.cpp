@@ -96,6 +96,8 @@ io::RunReport Simulation::run(const RunOptions& opt) {
     try {
         report.result = integ.run(t_, opt.until > 0 ? opt.until : spec_.t_end);
         t_ = report.result.t;
+        report.pair_list_builds = solver_->list_builds();
+        report.pairs = solver_->pair_list().pairs();
     } catch (const InstabilityError& e) {
         report.status = "unstable";
         report.message = e.what();

@@ -45,6 +45,8 @@ void write_summary(const std::string& path, const CaseSpec& spec, const RunRepor
     o << "  \"wall_seconds\": " << num(res.wall_seconds) << ",\n";
     o << "  \"particle_steps_per_second\": " << num(pss) << ",\n";
     o << "  \"threads\": " << r.threads << ",\n";
+    o << "  \"pair_list_builds\": " << r.pair_list_builds << ",\n";
+    o << "  \"pair_list_entries\": " << r.pairs << ",\n";
     const auto& t = res.timings;
     o << fmt::format("  \"timings\": {{\"neighbors\": {}, \"forces\": {}, \"integration\": {}, "
                      "\"output\": {}}},\n",

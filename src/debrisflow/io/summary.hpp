@@ -15,6 +15,8 @@ struct RunReport {
     int threads = 1;
     time::RunResult result;
     time::DtLimit initial_dt{0, ""};
+    long pair_list_builds = 0;
+    std::size_t pairs = 0; // half pair list entries at the end (pairs within support + skin)
 };
 
 // summary.json: counts, steps, times, throughput, timing breakdown and probe peaks/finals.
