@@ -44,8 +44,11 @@ TEST(DensityDiffusion, FourtakasVanishesForHydrostaticState) {
     s.f = -1e6;
     s.mass_j = 0.1;
     s.mass_i = 0.1;
+    s.inv_r2_eta2 = 1 / (s.r2 + 0.01 * p.h * p.h);
     s.rho_i = eos.density(1000 * 9.81 * depth);
     s.rho_j = eos.density(1000 * 9.81 * (depth - dz));
+    s.vol_i = s.mass_i / s.rho_i;
+    s.vol_j = s.mass_j / s.rho_j;
     const double pb = 1000 * 9.81 * depth / eos.b;
     const double left = 1 - 1 / std::pow(1 + pb, 1.0 / 7 - 1);
     EXPECT_GT(std::abs(molteni.pair(s).i), 0);
@@ -53,5 +56,7 @@ TEST(DensityDiffusion, FourtakasVanishesForHydrostaticState) {
     // Near the surface the flux vanishes.
     s.rho_i = eos.density(1000 * 9.81 * dz);
     s.rho_j = eos.density(0);
+    s.vol_i = s.mass_i / s.rho_i;
+    s.vol_j = s.mass_j / s.rho_j;
     EXPECT_NEAR(fourtakas.pair(s).i, 0, 0.01 * std::abs(molteni.pair(s).i));
 }

@@ -22,12 +22,12 @@ struct NoDiffusion {
 // D_i = delta h c0 sum 2 (rho_j - rho_i) (x_j - x_i).grad_i W / |x_ij|^2 m_j / rho_j.
 struct MolteniColagrossi {
     static constexpr const char* name = "molteni";
-    Real delta = 0.1, h = 0, c0 = 0, eta2 = 0;
+    Real delta = 0.1, h = 0, c0 = 0;
 
     DF_HD DensityRates pair(const PairState& s) const {
         // (x_j - x_i).grad_i W = -r^2 f
-        const Real k = 2 * delta * h * c0 * (-s.r2 * s.f) / (s.r2 + eta2) * (s.rho_j - s.rho_i);
-        return {k * s.mass_j / s.rho_j, -k * s.mass_i / s.rho_i};
+        const Real k = 2 * delta * h * c0 * (-s.r2 * s.f) * s.inv_r2_eta2 * (s.rho_j - s.rho_i);
+        return {k * s.vol_j, -k * s.vol_i};
     }
 };
 
@@ -36,15 +36,15 @@ struct MolteniColagrossi {
 // rho^H_j - rho^H_i = rho0 [(1 + rho0 g.(x_j - x_i) / B)^(1/gamma) - 1], B = c0^2 rho0 / gamma.
 struct Fourtakas {
     static constexpr const char* name = "fourtakas";
-    Real delta = 0.1, h = 0, c0 = 0, eta2 = 0;
+    Real delta = 0.1, h = 0, c0 = 0;
     Real rho0 = 1000, inv_gamma = 1.0 / 7, g_over_b[3] = {0, 0, 0}; // rho0 g / B
 
     DF_HD DensityRates pair(const PairState& s) const {
         // g.(x_j - x_i) = -g.r, scaled by rho0 / B
         const Real gr = -(g_over_b[0] * s.r.x + g_over_b[1] * s.r.y + g_over_b[2] * s.r.z);
-        const Real k = 2 * delta * h * c0 * (-s.r2 * s.f) / (s.r2 + eta2);
-        return {k * (s.rho_j - s.rho_i - hydrostatic(gr)) * s.mass_j / s.rho_j,
-                k * (s.rho_i - s.rho_j - hydrostatic(-gr)) * s.mass_i / s.rho_i};
+        const Real k = 2 * delta * h * c0 * (-s.r2 * s.f) * s.inv_r2_eta2;
+        return {k * (s.rho_j - s.rho_i - hydrostatic(gr)) * s.vol_j,
+                k * (s.rho_i - s.rho_j - hydrostatic(-gr)) * s.vol_i};
     }
     // rho^H_b - rho^H_a for rho0 g.(x_b - x_a) / B = x
     DF_HD Real hydrostatic(Real x) const {

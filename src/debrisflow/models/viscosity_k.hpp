@@ -15,13 +15,13 @@ struct ArtificialViscosity {
     static constexpr const char* name = "artificial";
     static constexpr bool needs_velocity_gradient = false;
     static constexpr bool no_slip_walls = false; // uses v_ij as is
-    Real alpha = 0.01, boundary_factor = 1, h = 0, eta2 = 0;
+    Real alpha = 0.01, boundary_factor = 1, h = 0;
 
     DF_HD Vec3 acceleration(const PairState& s) const {
         const Real vr = dot(s.v, s.r);
         if (vr >= 0) return {};
         const Real a = s.boundary_j ? alpha * boundary_factor : alpha;
-        const Real mu = h * vr / (s.r2 + eta2);
+        const Real mu = h * vr * s.inv_r2_eta2;
         const Real pi = -a * Real(0.5) * (s.c_i + s.c_j) * mu / (Real(0.5) * (s.rho_i + s.rho_j));
         return (-pi) * s.grad_w;
     }

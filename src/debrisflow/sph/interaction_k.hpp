@@ -22,8 +22,10 @@ template <class Kernel, class Viscosity, class Diffusion> struct PairTerms {
     Diffusion diff;
     const Real* prho; // p / rho^2 per particle
     const Real* cs;   // sound speed per particle
+    const Real* vol;  // m / rho per particle
     const Real* tau;  // SPS stress / rho^2, 6 per particle (xx, xy, xz, yy, yz, zz), or nullptr
     Real half_dp;     // dp / 2: smallest fluid-wall distance used in the no-slip extrapolation
+    Real eta2;        // 0.01 h^2, regulariser of 1 / r^2 (Monaghan 1992)
 
     // a_i += m_j g, a_j -= m_i g; drho_i += m_j cont + d.i, drho_j += m_i cont + d.j
     struct Result {
@@ -35,11 +37,12 @@ template <class Kernel, class Viscosity, class Diffusion> struct PairTerms {
     // Per-particle data of one side of a pair, loaded once per particle in the pair loops.
     struct Side {
         Vec3 x, v;
-        Real rho, prho, c, m;
+        Real rho, prho, c, m, vol;
         bool fluid;
     };
     DF_HD Side side(Index i) const {
-        return {pv.pos(i), pv.vel(i), pv.rho[i], prho[i], cs[i], pv.mass[i], pv.is_fluid(i)};
+        return {pv.pos(i), pv.vel(i),  pv.rho[i], prho[i],
+                cs[i],     pv.mass[i], vol[i],    pv.is_fluid(i)};
     }
 
     DF_HD Result operator()(Index i, Index j, Vec3 r, Real r2) const {
@@ -55,6 +58,9 @@ template <class Kernel, class Viscosity, class Diffusion> struct PairTerms {
         s.v = a.v - b.v;
         s.mass_i = a.m;
         s.mass_j = b.m;
+        s.vol_i = a.vol;
+        s.vol_j = b.vol;
+        s.inv_r2_eta2 = 1 / (r2 + eta2);
         s.rho_i = a.rho;
         s.rho_j = b.rho;
         s.c_i = a.c;

@@ -12,6 +12,8 @@ struct PairState {
     Vec3 grad_w; // grad_i W_ij
     Real f;      // (dW/dr)/r, so grad_w = r * f
     Real mass_i, mass_j;
+    Real vol_i, vol_j; // m / rho
+    Real inv_r2_eta2;  // 1 / (r^2 + 0.01 h^2), shared by artificial viscosity and diffusion
     Real rho_i, rho_j;
     Real c_i, c_j;
     bool boundary_j; // j is a boundary particle

@@ -5,14 +5,12 @@ namespace debrisflow::sph {
 SphModels SphModels::from_params(const SphParams& p) {
     SphModels m;
     m.kernel = kernels::make_kernel(p.kernel, p.h, p.dim);
-    const Real eta2 = Real(0.01) * p.h * p.h;
     m.viscosity = ViscosityRegistry::visit_name(p.viscosity, [&]<class V>() -> Viscosity {
         V v;
         if constexpr (std::is_same_v<V, models::ArtificialViscosity>) {
             v.alpha = p.alpha;
             v.boundary_factor = p.boundary_factor;
             v.h = p.h;
-            v.eta2 = eta2;
         } else {
             v.nu = p.nu;
             v.rho0 = p.rho0;
@@ -28,7 +26,6 @@ SphModels SphModels::from_params(const SphParams& p) {
             d.delta = p.delta;
             d.h = p.h;
             d.c0 = p.c0;
-            d.eta2 = eta2;
         }
         if constexpr (std::is_same_v<D, models::Fourtakas>) {
             const Real b = p.c0 * p.c0 * p.rho0 / p.gamma;

@@ -74,13 +74,15 @@ void SphSolver::update_pressure() {
     auto pv = set_.view();
     prho_.resize(std::size_t(pv.n));
     cs_.resize(std::size_t(pv.n));
-    Real *prho = prho_.data(), *cs = cs_.data();
+    vol_.resize(std::size_t(pv.n));
+    Real *prho = prho_.data(), *cs = cs_.data(), *vol = vol_.data();
     const auto eos = eos_;
     exec::for_each(pv.n, [=](Index i) {
         const Real p = eos.pressure(pv.rho[i]);
         pv.p[i] = p;
         prho[i] = p / (pv.rho[i] * pv.rho[i]);
         cs[i] = eos.sound_speed(pv.rho[i]);
+        vol[i] = pv.mass[i] / pv.rho[i];
     });
 }
 
@@ -104,8 +106,10 @@ void SphSolver::compute_forces() {
                                            diff,
                                            prho_.data(),
                                            cs_.data(),
+                                           vol_.data(),
                                            sps ? tau_.data() : nullptr,
-                                           Real(0.5) * params_.dp};
+                                           Real(0.5) * params_.dp,
+                                           Real(0.01) * params_.h * params_.h};
             using Side = typename PairTerms<K, V, D>::Side;
             exec::for_each_pair(
                 list_, pv.n, buffers_, [=](Index i) { return terms.side(i); },
@@ -151,8 +155,10 @@ void SphSolver::compute_forces_gather() {
                                            diff,
                                            prho_.data(),
                                            cs_.data(),
+                                           vol_.data(),
                                            sps ? tau_.data() : nullptr,
-                                           Real(0.5) * params_.dp};
+                                           Real(0.5) * params_.dp,
+                                           Real(0.01) * params_.h * params_.h};
             exec::for_each(pv.n, FluidInteraction<K, V, D>{terms, gv, params_.gravity});
         },
         models_.kernel, models_.viscosity, models_.diffusion);

@@ -60,7 +60,7 @@ private:
     models::TaitEos eos_;
     SphModels models_;
     neighbors::CellGrid grid_;
-    std::vector<Real> tau_, prho_, cs_;
+    std::vector<Real> tau_, prho_, cs_, vol_;
     neighbors::PairList list_;
     exec::ScatterBuffers buffers_;
     std::vector<Real> xref_, yref_, zref_; // positions at the last pair-list build
