@@ -83,8 +83,18 @@ void TriangleMesh::bounds(Vec3& lo, Vec3& hi) const {
 }
 
 bool TriangleMesh::contains(Vec3 p) const {
-    // Moller-Trumbore ray casting along a slightly skewed direction (avoids edge hits).
-    const Vec3 dir{0.5773, 0.5774, 0.5775};
+    // Majority of three ray-parity tests along unrelated directions, so that a ray grazing an
+    // edge or a vertex cannot decide alone.
+    const Vec3 dirs[3] = {{0.5773503, 0.2113249, 0.7886751},
+                          {-0.3826834, 0.8535534, 0.3535534},
+                          {0.7071068, -0.4082483, -0.5773503}};
+    int inside = 0;
+    for (const Vec3& d : dirs) inside += crossings(p, d) % 2;
+    return inside >= 2;
+}
+
+int TriangleMesh::crossings(Vec3 p, Vec3 dir) const {
+    // Moller-Trumbore ray-triangle intersection, counting hits with t > 0.
     int hits = 0;
     for (const auto& t : triangles) {
         const Vec3 e1 = t.b - t.a, e2 = t.c - t.a;
@@ -100,7 +110,7 @@ bool TriangleMesh::contains(Vec3 p) const {
         if (v < 0 || u + v > 1) continue;
         if (dot(e2, qv) * inv > 0) ++hits;
     }
-    return hits % 2 == 1;
+    return hits;
 }
 
 } // namespace debrisflow::scenario

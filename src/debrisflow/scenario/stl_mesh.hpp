@@ -17,6 +17,8 @@ struct TriangleMesh {
     void bounds(Vec3& lo, Vec3& hi) const;
     // Point-in-closed-mesh test by ray parity.
     bool contains(Vec3 p) const;
+    // Number of triangles a ray from p along dir crosses.
+    int crossings(Vec3 p, Vec3 dir) const;
 };
 
 } // namespace debrisflow::scenario
