@@ -1,5 +1,7 @@
-// Micro-benchmarks: neighbour-grid build and the WCSPH interaction loop on the 3D dam-break
-// benchmark case, at the thread count given by OMP_NUM_THREADS.
+// Micro-benchmarks on the 3D dam-break benchmark case (cases/bench/dambreak3d.toml) at its
+// initial state: cell-grid build, pair-list build, one force evaluation (scatter over the half
+// pair list) and the gather loop (the GPU layout). Threads: OMP_NUM_THREADS.
+//   OMP_NUM_THREADS=1 build/bench/sph_bench ; OMP_NUM_THREADS=2 build/bench/sph_bench
 #include "debrisflow/app/simulation.hpp"
 #include "debrisflow/io/case_spec.hpp"
 #include <benchmark/benchmark.h>
@@ -7,25 +9,56 @@
 using namespace debrisflow;
 
 static app::Simulation& sim() {
-    static app::Simulation s(io::read_case(DEBRISFLOW_SOURCE_DIR "/cases/bench/dambreak3d.toml", {}));
+    static app::Simulation s(
+        io::read_case(DEBRISFLOW_SOURCE_DIR "/cases/bench/dambreak3d.toml", {}));
+    static bool ready = false;
+    if (!ready) {
+        s.solver().update_neighbors(true);
+        ready = true;
+    }
     return s;
 }
 
-static void BM_NeighborBuild(benchmark::State& state) {
-    auto& s = sim();
-    for (auto _ : state) s.solver().update_neighbors(true);
-    state.counters["particles/s"] = benchmark::Counter(double(s.particles().size()),
-                                                       benchmark::Counter::kIsIterationInvariantRate);
+static void set_counters(benchmark::State& state, double pairs) {
+    const double n = double(sim().particles().size());
+    state.counters["particles/s"] =
+        benchmark::Counter(n, benchmark::Counter::kIsIterationInvariantRate);
+    if (pairs > 0)
+        state.counters["pairs/s"] =
+            benchmark::Counter(pairs, benchmark::Counter::kIsIterationInvariantRate);
 }
-BENCHMARK(BM_NeighborBuild)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-static void BM_Interaction(benchmark::State& state) {
+static void BM_CellGridBuild(benchmark::State& state) {
     auto& s = sim();
-    s.solver().update_neighbors(true);
-    for (auto _ : state) s.solver().compute_forces();
-    state.counters["particles/s"] = benchmark::Counter(double(s.particles().size()),
-                                                       benchmark::Counter::kIsIterationInvariantRate);
+    const auto& p = s.particles();
+    neighbors::CellGrid grid;
+    const auto& d = s.spec().domain;
+    grid.configure(d.lo, d.hi, s.solver().support() * 1.1, 3, d.periodic);
+    for (auto _ : state) grid.build(p.x.data(), p.y.data(), p.z.data(), p.size());
+    set_counters(state, 0);
 }
-BENCHMARK(BM_Interaction)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_CellGridBuild)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+static void BM_PairListBuild(benchmark::State& state) {
+    auto& s = sim();
+    neighbors::PairList list;
+    for (auto _ : state) list.build(s.solver().grid().view(), s.particles().view());
+    set_counters(state, double(list.pairs()));
+}
+BENCHMARK(BM_PairListBuild)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+static void BM_ForcesScatter(benchmark::State& state) {
+    auto& s = sim();
+    for (auto _ : state) s.solver().compute_forces();
+    set_counters(state, double(s.solver().pair_list().pairs()));
+}
+BENCHMARK(BM_ForcesScatter)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+static void BM_ForcesGather(benchmark::State& state) {
+    auto& s = sim();
+    for (auto _ : state) s.solver().compute_forces_gather();
+    set_counters(state, 2.0 * double(s.solver().pair_list().pairs()));
+}
+BENCHMARK(BM_ForcesGather)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 BENCHMARK_MAIN();
