@@ -70,9 +70,9 @@ void check_tank(int dim, double dp, double width, double depth, Check check) {
             // Mean over the last 0.25 s, so that the remaining acoustic oscillation averages out.
             // Source: hydrostatics p = rho0 g d; tolerance 1 % (issue #2, validation 1).
             const double mean = p->mean(0, 1.25, 1.5);
-        EXPECT_NEAR(mean, expected, 0.01 * expected) << p->name();
-        std::cout << fmt::format("{}D {}: {:.2f} Pa vs rho g d = {:.2f} Pa ({:+.2f} %)\n", dim,
-                                 p->name(), mean, expected, 100 * (mean - expected) / expected);
+            EXPECT_NEAR(mean, expected, 0.01 * expected) << p->name();
+            std::cout << fmt::format("{}D {}: {:.2f} Pa vs rho g d = {:.2f} Pa ({:+.2f} %)\n", dim,
+                                     p->name(), mean, expected, 100 * (mean - expected) / expected);
         }
     if (check != Check::drift) return;
     double max_drift = 0;

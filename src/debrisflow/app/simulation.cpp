@@ -57,6 +57,8 @@ io::RunReport Simulation::run(const RunOptions& opt) {
     time::Integrator integ;
     integ.add_phase(solver_.get());
     integ.set_reorder_every(spec_.sph.reorder_every);
+    integ.set_scheme(spec_.scheme == "verlet" ? time::Scheme::verlet : time::Scheme::symplectic,
+                     spec_.verlet_euler_every);
     for (std::size_t w = 0; w < spec_.walls.size(); ++w) {
         if (!spec_.walls[w].remove_at) continue;
         const Real at = *spec_.walls[w].remove_at;

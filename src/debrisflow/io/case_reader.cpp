@@ -155,6 +155,9 @@ CaseSpec read_case(const std::string& path, const std::vector<std::string>& over
     auto time = root.table("time");
     if (!time) root.fail("time", "missing required table [time] with key 'end'");
     c.t_end = time->positive("end");
+    c.scheme = time->choice("scheme", {"symplectic", "verlet"}, "symplectic");
+    c.verlet_euler_every = int(time->integer("verlet_euler_every", 40));
+    if (c.verlet_euler_every < 1) time->fail("verlet_euler_every", "must be >= 1");
     time->finish();
 
     auto output = root.table("output");

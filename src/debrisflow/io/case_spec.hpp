@@ -53,6 +53,8 @@ struct CaseSpec {
     int dim = 2;
     Real dp = 0;
     Real t_end = 0;
+    std::string scheme = "symplectic"; // time.scheme: symplectic | verlet
+    int verlet_euler_every = 40;
     Real vtk_every = 0; // 0: first and last frame only
     bool vtk = true;
     Real progress_seconds = 2;

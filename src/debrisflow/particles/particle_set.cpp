@@ -4,8 +4,9 @@ namespace debrisflow::particles {
 
 namespace {
 template <class Fn> void for_each_field(ParticleSet& s, Fn&& fn) {
-    for (auto* f : {&s.x, &s.y, &s.z, &s.vx, &s.vy, &s.vz, &s.ax, &s.ay, &s.az, &s.rho, &s.drho,
-                    &s.p, &s.mass, &s.wnx, &s.wny, &s.wnz, &s.wd})
+    for (auto* f : {&s.x,   &s.y,   &s.z,   &s.vx,     &s.vy,     &s.vz,     &s.ax,
+                    &s.ay,  &s.az,  &s.rho, &s.drho,   &s.p,      &s.mass,   &s.wnx,
+                    &s.wny, &s.wnz, &s.wd,  &s.vx_old, &s.vy_old, &s.vz_old, &s.rho_old})
         fn(*f);
     fn(s.kind);
     fn(s.group);
@@ -37,6 +38,10 @@ void ParticleSet::add(Vec3 pos, Vec3 vel, Real density, Real m, Kind k, std::int
     wny.push_back(0);
     wnz.push_back(0);
     wd.push_back(0);
+    vx_old.push_back(vel.x);
+    vy_old.push_back(vel.y);
+    vz_old.push_back(vel.z);
+    rho_old.push_back(density);
     kind.push_back(std::uint8_t(k));
     group.push_back(grp);
     id.push_back(next_id_++);

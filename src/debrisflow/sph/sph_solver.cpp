@@ -234,6 +234,35 @@ void SphSolver::corrector(Real dt) {
     });
 }
 
+void SphSolver::verlet_step(Real dt, bool euler) {
+    // Verlet (DualSPHysics, Dominguez et al. 2022 eqs. 17-19):
+    //   x_n+1 = x_n + dt v_n + dt^2/2 a_n,  v_n+1 = v_n-1 + 2 dt a_n,  rho_n+1 = rho_n-1 + 2 dt D_n
+    // and, every `euler` step, v_n+1 = v_n + dt a_n, rho_n+1 = rho_n + dt D_n.
+    ScopedTimer timer(t_integrate_);
+    auto pv = set_.view();
+    Real *vxo = set_.vx_old.data(), *vyo = set_.vy_old.data(), *vzo = set_.vz_old.data();
+    Real* ro = set_.rho_old.data();
+    const Real rho_ref = params_.rho0, hdt2 = Real(0.5) * dt * dt;
+    const Domain d = domain_;
+    exec::for_each(pv.n, [=](Index i) {
+        const Real r_new = (euler ? pv.rho[i] : ro[i]) + (euler ? dt : 2 * dt) * pv.drho[i];
+        ro[i] = pv.rho[i];
+        pv.rho[i] = pv.is_fluid(i) || r_new >= rho_ref ? r_new : rho_ref;
+        if (!pv.is_fluid(i)) return;
+        Real* xs[3] = {pv.x, pv.y, pv.z};
+        Real* vs[3] = {pv.vx, pv.vy, pv.vz};
+        Real* vo[3] = {vxo, vyo, vzo};
+        const Real as[3] = {pv.ax[i], pv.ay[i], pv.az[i]};
+        for (int k = 0; k < 3; ++k) {
+            const Real v = vs[k][i];
+            const Real x = xs[k][i] + dt * v + hdt2 * as[k];
+            xs[k][i] = d.periodic[k] ? wrap(x, d.lo[k], d.hi[k]) : x;
+            vs[k][i] = (euler ? v : vo[k][i]) + (euler ? dt : 2 * dt) * as[k];
+            vo[k][i] = v;
+        }
+    });
+}
+
 time::DtLimit SphSolver::stable_dt() const {
     auto pv = const_cast<particles::ParticleSet&>(set_).view();
     const auto eos = eos_;

@@ -27,6 +27,7 @@ public:
     void compute_forces() override;
     void predictor(Real dt) override;
     void corrector(Real dt) override;
+    void verlet_step(Real dt, bool euler) override;
     time::DtLimit stable_dt() const override;
     void check_health(Real t) const override;
     void add_timings(time::Timings& t) const override;

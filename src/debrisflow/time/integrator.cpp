@@ -71,10 +71,15 @@ RunResult Integrator::run(Real t0, Real t_end) {
             if (info.t + lim.dt > t_end) lim.dt = t_end - info.t;
             info.dt = lim.dt;
             info.limiter = lim.limiter;
-            for (Phase* p : phases_) p->predictor(lim.dt);
-            for (Phase* p : phases_) p->update_neighbors(false);
-            for (Phase* p : phases_) p->compute_forces();
-            for (Phase* p : phases_) p->corrector(lim.dt);
+            if (scheme_ == Scheme::symplectic) {
+                for (Phase* p : phases_) p->predictor(lim.dt);
+                for (Phase* p : phases_) p->update_neighbors(false);
+                for (Phase* p : phases_) p->compute_forces();
+                for (Phase* p : phases_) p->corrector(lim.dt);
+            } else {
+                const bool euler = euler_every_ > 0 && (info.step + 1) % euler_every_ == 0;
+                for (Phase* p : phases_) p->verlet_step(lim.dt, euler);
+            }
             info.t += lim.dt;
             ++info.step;
             call_hooks(Hook::after_integration, info);

@@ -33,7 +33,11 @@ struct RunResult {
 //   predictor: x, v, rho advanced by dt/2;   forces at t_n+1/2
 //   corrector: v_n+1 = v_n + dt a_n+1/2, x_n+1 = x_n + dt (v_n + v_n+1)/2,
 //              rho_n+1 = rho_n (2 - eps)/(2 + eps), eps = -dt drho_n+1/2 / rho_n+1/2
+// The alternative `verlet` scheme (one force evaluation per step, as DualSPHysics's examples
+// use) is available for speed comparisons; the validation suite runs the symplectic scheme.
 // dt is the minimum over phases of their stable step; the limiting criterion is reported.
+enum class Scheme { symplectic, verlet };
+
 class Integrator {
 public:
     using Callback = std::function<void(const StepInfo&)>;
@@ -45,6 +49,10 @@ public:
     void set_min_dt_fraction(Real f) { min_dt_fraction_ = f; }
     // An optional fixed step; it must not exceed the stable one.
     void set_fixed_dt(Real dt) { fixed_dt_ = dt; }
+    void set_scheme(Scheme s, int euler_every = 40) {
+        scheme_ = s;
+        euler_every_ = euler_every;
+    }
     // Particles are sorted by cell every n steps (0: never).
     void set_reorder_every(int n) { reorder_every_ = n; }
 
@@ -72,6 +80,8 @@ private:
     Real min_dt_fraction_ = 1e-3;
     Real fixed_dt_ = 0;
     int reorder_every_ = 1;
+    Scheme scheme_ = Scheme::symplectic;
+    int euler_every_ = 40;
     double t_output_ = 0;
     RunResult result_;
 };

@@ -28,6 +28,9 @@ public:
     virtual void predictor(Real dt) = 0;
     // Completes the step from the saved state with the derivatives at t_n + dt/2.
     virtual void corrector(Real dt) = 0;
+    // One Verlet step (Verlet 1967 as in DualSPHysics) with the derivatives at t_n; `euler`
+    // replaces the leapfrog over two steps by a forward step (decouples odd and even steps).
+    virtual void verlet_step(Real dt, bool euler) = 0;
     virtual DtLimit stable_dt() const = 0;
     // Throws InstabilityError when the state is no longer physical.
     virtual void check_health(Real t) const = 0;
