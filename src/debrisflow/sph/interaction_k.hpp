@@ -128,6 +128,12 @@ template <class Kernel, class Viscosity, class Diffusion> struct FluidInteractio
     }
 };
 
+template <class K, class V, class D>
+FluidInteraction<K, V, D> make_gather(const PairTerms<K, V, D>& terms, neighbors::GridView grid,
+                                      Vec3 gravity) {
+    return {terms, grid, gravity};
+}
+
 // SPS stress of fluid particle i (Dalrymple & Rogers 2006, eq. 11) from the SPH velocity
 // gradient grad v_i = sum m_j / rho_j (v_j - v_i) (x) grad W_ij. Writes tau / rho^2.
 template <class Kernel> struct SpsStress {

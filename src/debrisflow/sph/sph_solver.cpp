@@ -86,82 +86,61 @@ void SphSolver::update_pressure() {
     });
 }
 
-void SphSolver::compute_forces() {
-    ScopedTimer timer(t_forces_);
+template <class F> void SphSolver::with_pair_terms(F&& f) {
     update_pressure();
     const bool sps = std::holds_alternative<models::LaminarSpsViscosity>(models_.viscosity);
     if (sps) compute_sps_stress();
     auto pv = set_.view();
-    const auto gv = grid_.view();
-    const Real support2 = support_ * support_;
-    const Vec3 gravity = params_.gravity;
     std::visit(
         [&](const auto& kernel, const auto& visc, const auto& diff) {
             using K = std::decay_t<decltype(kernel)>;
             using V = std::decay_t<decltype(visc)>;
             using D = std::decay_t<decltype(diff)>;
-            const PairTerms<K, V, D> terms{pv,
-                                           kernel,
-                                           visc,
-                                           diff,
-                                           prho_.data(),
-                                           cs_.data(),
-                                           vol_.data(),
-                                           sps ? tau_.data() : nullptr,
-                                           Real(0.5) * params_.dp,
-                                           Real(0.01) * params_.h * params_.h};
-            using Side = typename PairTerms<K, V, D>::Side;
-            exec::for_each_pair(
-                list_, pv.n, buffers_, [=](Index i) { return terms.side(i); },
-                [=](const Side& a, Index i, Index j, Vec3& acc_i, Real& drho_i, Real* out_j) {
-                    const Side b = terms.side(j);
-                    const Vec3 r = gv.separation(a.x, b.x);
-                    const Real r2 = dot(r, r);
-                    if (r2 >= support2) return;
-                    const auto t = terms(a, i, b, j, r, r2);
-                    const Real mi = a.m, mj = b.m;
-                    acc_i += mj * t.g;
-                    drho_i += mj * t.cont + t.d.i;
-                    out_j[0] -= mi * t.g.x;
-                    out_j[1] -= mi * t.g.y;
-                    out_j[2] -= mi * t.g.z;
-                    out_j[3] += mi * t.cont + t.d.j;
-                },
-                [=](Index i, Vec3 acc, Real drho) {
-                    if (pv.is_fluid(i)) acc += gravity;
-                    pv.ax[i] = acc.x;
-                    pv.ay[i] = acc.y;
-                    pv.az[i] = acc.z;
-                    pv.drho[i] = drho;
-                });
+            f(PairTerms<K, V, D>{pv, kernel, visc, diff, prho_.data(), cs_.data(), vol_.data(),
+                                 sps ? tau_.data() : nullptr, Real(0.5) * params_.dp,
+                                 Real(0.01) * params_.h * params_.h});
         },
         models_.kernel, models_.viscosity, models_.diffusion);
 }
 
-void SphSolver::compute_forces_gather() {
-    update_pressure();
-    const bool sps = std::holds_alternative<models::LaminarSpsViscosity>(models_.viscosity);
-    if (sps) compute_sps_stress();
+void SphSolver::compute_forces() {
+    ScopedTimer timer(t_forces_);
     auto pv = set_.view();
     const auto gv = grid_.view();
-    std::visit(
-        [&](const auto& kernel, const auto& visc, const auto& diff) {
-            using K = std::decay_t<decltype(kernel)>;
-            using V = std::decay_t<decltype(visc)>;
-            using D = std::decay_t<decltype(diff)>;
-            const PairTerms<K, V, D> terms{pv,
-                                           kernel,
-                                           visc,
-                                           diff,
-                                           prho_.data(),
-                                           cs_.data(),
-                                           vol_.data(),
-                                           sps ? tau_.data() : nullptr,
-                                           Real(0.5) * params_.dp,
-                                           Real(0.01) * params_.h * params_.h};
-            exec::for_each(pv.n, FluidInteraction<K, V, D>{terms, gv, params_.gravity});
-        },
-        models_.kernel, models_.viscosity, models_.diffusion);
+    const Real support2 = support_ * support_;
+    const Vec3 gravity = params_.gravity;
+    with_pair_terms([&](const auto& terms) {
+        using Side = typename std::decay_t<decltype(terms)>::Side;
+        exec::for_each_pair(
+            list_, pv.n, buffers_, [=](Index i) { return terms.side(i); },
+            [=](const Side& a, Index i, Index j, Vec3& acc_i, Real& drho_i, Real* out_j) {
+                const Side b = terms.side(j);
+                const Vec3 r = gv.separation(a.x, b.x);
+                const Real r2 = dot(r, r);
+                if (r2 >= support2) return;
+                const auto t = terms(a, i, b, j, r, r2);
+                acc_i += b.m * t.g;
+                drho_i += b.m * t.cont + t.d.i;
+                out_j[0] -= a.m * t.g.x;
+                out_j[1] -= a.m * t.g.y;
+                out_j[2] -= a.m * t.g.z;
+                out_j[3] += a.m * t.cont + t.d.j;
+            },
+            [=](Index i, Vec3 acc, Real drho) {
+                if (pv.is_fluid(i)) acc += gravity;
+                pv.ax[i] = acc.x;
+                pv.ay[i] = acc.y;
+                pv.az[i] = acc.z;
+                pv.drho[i] = drho;
+            });
+    });
+}
+
+void SphSolver::compute_forces_gather() {
+    const auto gv = grid_.view();
+    with_pair_terms([&](const auto& terms) {
+        exec::for_each(set_.size(), make_gather(terms, gv, params_.gravity));
+    });
 }
 
 namespace {

@@ -54,6 +54,8 @@ public:
 private:
     void update_pressure();
     void compute_sps_stress();
+    // Updates pressures (and SPS stresses) and calls f(PairTerms<K, V, D>) for the case's models.
+    template <class F> void with_pair_terms(F&& f);
     Real max_displacement() const;
     SphParams params_;
     particles::ParticleSet& set_;
