@@ -24,8 +24,15 @@ probes::Probe& Simulation::probe(const std::string& name) {
 
 std::size_t Simulation::memory_bytes() const {
     const std::size_t n = std::size_t(set_.size());
-    // 13 Real fields + kind + group + id, x2 while reordering, + grid (cell, order) arrays
-    return n * (2 * (13 * sizeof(Real) + 1 + 2 + 8) + 3 * sizeof(Index));
+    // Particle fields (21 Real + kind + group + id), doubled while reordering; integrator
+    // copies (7 Real); grid arrays; half pair list: half the neighbours within support + skin
+    // (1.1 support) plus 25 % capacity slack, 4 bytes each.
+    const double pi = 3.14159265358979, reach = 1.1 * solver_->support() / spec_.dp;
+    const double neighbours =
+        spec_.dim == 3 ? 4.0 / 3.0 * pi * reach * reach * reach : pi * reach * reach;
+    const std::size_t list = std::size_t(0.5 * neighbours * 1.25) * sizeof(Index);
+    return n * (2 * (21 * sizeof(Real) + 1 + 2 + 8) + 7 * sizeof(Real) + 3 * sizeof(Index) + list +
+                4 * sizeof(Real) * 2);
 }
 
 io::RunReport Simulation::run(const RunOptions& opt) {
@@ -90,9 +97,9 @@ io::RunReport Simulation::run(const RunOptions& opt) {
         const double wall = std::chrono::duration<double>(now - wall0).count();
         const double pss = wall > 0 ? double(set_.size()) * double(s.step) / wall : 0;
         const double eta = s.t > 0 ? wall * (spec_.t_end - s.t) / s.t : 0;
-        log_.progress(fmt::format("t = {:.5f} s  step {}  dt = {:.3e} s ({})  {:.3g} "
-                                  "particle-steps/s  wall {:.1f} s  ETA {:.0f} s",
-                                  s.t, s.step, s.dt, s.limiter, pss, wall, eta));
+        log_.line(fmt::format("t = {:.5f} s  step {}  dt = {:.3e} s ({})  {:.3g} "
+                              "particle-steps/s  wall {:.1f} s  ETA {:.0f} s",
+                              s.t, s.step, s.dt, s.limiter, pss, wall, eta));
     });
 
     try {

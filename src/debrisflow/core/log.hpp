@@ -11,8 +11,6 @@ public:
     void open(const std::string& path) { file_.open(path); }
     void set_quiet(bool q) { quiet_ = q; }
     void line(const std::string& s);
-    // Terminal-only progress line (overwritten in place when stdout is a terminal).
-    void progress(const std::string& s);
 
 private:
     std::ofstream file_;
