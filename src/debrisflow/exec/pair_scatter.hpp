@@ -27,7 +27,7 @@ void for_each_pair(const neighbors::PairList& list, Index n, ScatterBuffers& buf
     {
         Real* b = buf.per_thread[std::size_t(omp_get_thread_num())].data();
         std::fill(b, b + 4 * std::size_t(n), Real(0)); // each thread clears its own buffer
-#pragma omp for schedule(dynamic, 64) // wall particles cluster: balance dynamically
+#pragma omp for schedule(static, 64) // round-robin chunks: balanced and deterministic
         for (Index i = 0; i < n; ++i) {
             Vec3 vi{};
             Real si = 0;
