@@ -15,42 +15,9 @@ using namespace debrisflow;
 
 namespace {
 
-// Column `width` x `height` at the left end of a tank `length` long; front probe along x.
-std::string dambreak_case(double dp, double width, double height, double length, double t_end) {
-    return fmt::format(R"(
-dimensions = 2
-dp = {0}
-[time]
-end = {4}
-[output]
-vtk = false
-[domain]
-min = [-0.05, -0.05]
-max = [{5}, {6}]
-[sph]
-c0_coefficient = 10
-reference_depth = {2}
-viscosity = "artificial"
-alpha = 0.01
-diffusion = "fourtakas"
-[[fluid]]
-name = "column"
-shape = "box"
-min = [0, 0]
-max = [{1}, {2}]
-[[wall]]
-name = "tank"
-shape = "open_tank"
-min = [0, 0]
-max = [{3}, {7}]
-[[probe]]
-name = "front"
-type = "front"
-axis = "x"
-every = 0.0005
-)",
-                       dp, width, height, length, t_end, length + 0.05, 2 * height + 0.1,
-                       2 * height);
+// A case of cases/validation/ with overrides.
+io::CaseSpec validation_case(const std::string& name, std::vector<std::string> sets) {
+    return io::read_case(std::string(DEBRISFLOW_SOURCE_DIR) + "/cases/validation/" + name, sets);
 }
 
 // Largest relative error of the simulated front against reference points in [t_lo, t_hi]
@@ -80,8 +47,9 @@ FrontRun run_martin_moyce() {
     const double a = 0.1, dp = a / 40, g = 9.81;
     const double t_scale = std::sqrt(a / g); // T = t sqrt(g/a)
     FrontRun r{t_scale, 1 / a, dp,
-               std::make_unique<app::Simulation>(test::case_from_toml(
-                   "mm_front", dambreak_case(dp, a, a, 8 * a, 3.2 * t_scale)))};
+               std::make_unique<app::Simulation>(validation_case(
+                   "dambreak_mm.toml",
+                   {fmt::format("dp={}", dp), fmt::format("time.end={}", 3.2 * t_scale)}))};
     r.sim->run({"", true, 0});
     return r;
 }
@@ -89,9 +57,11 @@ FrontRun run_martin_moyce() {
 FrontRun run_koshizuka_oka(const std::vector<std::string>& sets = {}) {
     const double L = 0.146, dp = L / 40, g = 9.81;
     const double t_scale = std::sqrt(L / (2 * g)); // T = t sqrt(2g/L)
+    std::vector<std::string> all = {fmt::format("dp={}", dp),
+                                    fmt::format("time.end={}", 3.2 * t_scale)};
+    all.insert(all.end(), sets.begin(), sets.end());
     FrontRun r{t_scale, 1 / L, dp,
-               std::make_unique<app::Simulation>(test::case_from_toml(
-                   "ko_front", dambreak_case(dp, L, 2 * L, 4 * L, 3.2 * t_scale), sets))};
+               std::make_unique<app::Simulation>(validation_case("dambreak_ko.toml", all))};
     r.sim->run({"", true, 0});
     return r;
 }

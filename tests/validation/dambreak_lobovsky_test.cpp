@@ -15,42 +15,6 @@ namespace {
 
 constexpr double H = 0.3, g = 9.81, rho0 = 1000;
 
-std::string lobovsky_case(double dp, double t_end) {
-    return fmt::format(R"(
-dimensions = 2
-dp = {0}
-[time]
-end = {1}
-[output]
-vtk = false
-[domain]
-min = [-0.05, -0.05]
-max = [1.66, 0.8]
-[sph]
-c0_coefficient = 10
-reference_depth = 0.3
-viscosity = "artificial"
-alpha = 0.01
-diffusion = "fourtakas"
-[[fluid]]
-name = "column"
-shape = "box"
-min = [0, 0]
-max = [0.6, 0.3]
-[[wall]]
-name = "tank"
-shape = "open_tank"
-min = [0, 0]
-max = [1.61, 0.7]
-[[probe]]
-name = "sensor1"
-type = "pressure"
-position = [1.6043, 0.003]
-every = 0.0005
-)",
-                       dp, t_end);
-}
-
 // First T at which the curve reaches `level`.
 double arrival(const test::Curve& c, double level) {
     for (const auto& [T, P] : c)
@@ -70,7 +34,10 @@ double mean_between(const test::Curve& c, double a, double b) {
 
 TEST(DamBreakLobovsky, Sensor1ArrivalAndPlateau) {
     const double t_scale = std::sqrt(H / g);
-    app::Simulation sim(test::case_from_toml("lobovsky", lobovsky_case(0.006, 6.1 * t_scale)));
+    // The demo case (cases/dambreak2d.toml) at dp = 6 mm.
+    app::Simulation sim(io::read_case(
+        std::string(DEBRISFLOW_SOURCE_DIR) + "/cases/dambreak2d.toml",
+        {"dp=0.006", fmt::format("time.end={}", 6.1 * t_scale), "probe.0.every=0.0005"}));
     sim.run({"", true, 0});
     test::Curve simc;
     for (const auto& row : sim.probe("sensor1").history())
