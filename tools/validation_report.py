@@ -56,6 +56,24 @@ def run(build, case, out, sets):
     return json.load(open(os.path.join(out, "summary.json")))
 
 
+def run_front(build, case, out, dp, t_scale, length):
+    """Runs a dam-break case at dp; returns its summary and the front as (T, Z = x/length)."""
+    s = run(build, os.path.join(ROOT, "cases", "validation", case), out, [f"dp={dp}"])
+    f = read_probe(os.path.join(out, "probes", "front.csv"))
+    return s, f[:, 0] / t_scale, (f[:, 1] + dp / 2) / length  # leading edge: centre + dp/2
+
+
+def save_figure(xlabel, ylabel, title, xlim, path):
+    plt.xlabel(xlabel)
+    plt.ylabel(ylabel)
+    plt.xlim(*xlim)
+    plt.legend()
+    plt.title(title)
+    plt.tight_layout()
+    plt.savefig(path, dpi=110)
+    plt.close()
+
+
 def front_errors(sim_T, sim_Z, ref, lo, hi):
     m = (ref[:, 0] >= lo) & (ref[:, 0] <= hi)
     z = np.interp(ref[m, 0], sim_T, sim_Z)
@@ -79,52 +97,31 @@ def main():
     plt.plot(ko_exp[:, 0], ko_exp[:, 1], "ko", label="experiment (Koshizuka & Oka 1996)")
     plt.plot(ko_mps[:, 0], ko_mps[:, 1], "k--", label="MPS (Koshizuka & Oka 1996)")
     for n in (20, 40, 80):
-        dp = L / n
-        out = os.path.join(args.out, f"ko_L{n}")
-        s = run(args.build, os.path.join(ROOT, "cases/validation/dambreak_ko.toml"), out,
-                [f"dp={dp}"])
-        f = read_probe(os.path.join(out, "probes", "front.csv"))
-        T = f[:, 0] * math.sqrt(2 * G / L)
-        Z = (f[:, 1] + dp / 2) / L
+        s, T, Z = run_front(args.build, "dambreak_ko.toml", os.path.join(args.out, f"ko_L{n}"),
+                            L / n, math.sqrt(L / (2 * G)), L)
         plt.plot(T, Z, label=f"debrisflow dp = L/{n}")
         e_mps = front_errors(T, Z, ko_mps, 1.0, 3.0)
         e_exp = front_errors(T, Z, ko_exp, 1.0, 3.2)
         lines.append(f"| Koshizuka & Oka front | L/{n} | {s['particles']['total']} | {s['steps']} "
                      f"| {s['wall_seconds']:.1f} | max error 1<=T<=3: {100*e_mps:.1f} % vs MPS, "
                      f"{100*e_exp:.1f} % vs experiment |")
-    plt.xlabel("T = t sqrt(2g/L)")
-    plt.ylabel("Z = z/L")
-    plt.xlim(0, 3.3)
-    plt.legend()
-    plt.title("Dam-break surge front, resolution study")
-    plt.tight_layout()
-    plt.savefig(os.path.join(figs, "dambreak_ko_resolution.png"), dpi=110)
-    plt.close()
+    save_figure("T = t sqrt(2g/L)", "Z = z/L", "Dam-break surge front, resolution study",
+                (0, 3.3), os.path.join(figs, "dambreak_ko_resolution.png"))
 
     # Martin & Moyce square column
     a = 0.1
-    dp = a / 40
-    out = os.path.join(args.out, "mm")
-    s = run(args.build, os.path.join(ROOT, "cases/validation/dambreak_mm.toml"), out, [f"dp={dp}"])
+    s, T, Z = run_front(args.build, "dambreak_mm.toml", os.path.join(args.out, "mm"), a / 40,
+                        math.sqrt(a / G), a)
     mm = read_curve(os.path.join(REF, "dambreak_2d_martin_moyce",
                                  "MM1952_table_front_square_column.csv"))
-    f = read_probe(os.path.join(out, "probes", "front.csv"))
-    T = f[:, 0] * math.sqrt(G / a)
-    Z = (f[:, 1] + dp / 2) / a
     e = front_errors(T, Z, mm, 1.0, 3.0)
     lines.append(f"| Martin & Moyce front | a/40 | {s['particles']['total']} | {s['steps']} | "
                  f"{s['wall_seconds']:.1f} | max error 1<=T<=3: {100*e:.1f} % vs experiment |")
     plt.figure(figsize=(6, 4.5))
     plt.plot(mm[:, 0], mm[:, 1], "ko", label="experiment (Martin & Moyce 1952)")
     plt.plot(T, Z, label="debrisflow dp = a/40")
-    plt.xlabel("T = t sqrt(g/a)")
-    plt.ylabel("Z = z/a")
-    plt.xlim(0, 3.3)
-    plt.legend()
-    plt.title("Dam-break surge front, square column")
-    plt.tight_layout()
-    plt.savefig(os.path.join(figs, "dambreak_mm.png"), dpi=110)
-    plt.close()
+    save_figure("T = t sqrt(g/a)", "Z = z/a", "Dam-break surge front, square column", (0, 3.3),
+                os.path.join(figs, "dambreak_mm.png"))
 
     # Lobovsky sensor 1
     H = 0.3
@@ -145,15 +142,9 @@ def main():
     plt.figure(figsize=(6, 4.5))
     plt.plot(exp[:, 0], exp[:, 1], "ko", ms=3, label="experiment (Lobovsky et al. 2014)")
     plt.plot(T, P, lw=0.8, label="debrisflow dp = 6 mm")
-    plt.xlabel("T = t sqrt(g/H)")
-    plt.ylabel("p / (rho g H)")
-    plt.xlim(0, 7)
     plt.ylim(-0.5, 4)  # the simulated impact spike (acoustic, ~20) is clipped
-    plt.legend()
-    plt.title("Pressure at sensor 1 (y = 3 mm)")
-    plt.tight_layout()
-    plt.savefig(os.path.join(figs, "dambreak_lobovsky_sensor1.png"), dpi=110)
-    plt.close()
+    save_figure("T = t sqrt(g/H)", "p / (rho g H)", "Pressure at sensor 1 (y = 3 mm)", (0, 7),
+                os.path.join(figs, "dambreak_lobovsky_sensor1.png"))
 
     table = "\n".join(lines) + "\n"
     with open(os.path.join(ROOT, "docs", "validation_results.md"), "w") as fh:

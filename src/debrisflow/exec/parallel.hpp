@@ -10,12 +10,6 @@ template <class F> void for_each(Index n, const F& f) {
     for (Index i = 0; i < n; ++i) f(i);
 }
 
-// Dynamic scheduling, for loops whose cost varies strongly between particles.
-template <class F> void for_each_dynamic(Index n, const F& f) {
-#pragma omp parallel for schedule(dynamic, 256)
-    for (Index i = 0; i < n; ++i) f(i);
-}
-
 // max over i of f(i) (f returns Real >= 0).
 template <class F> Real max_of(Index n, const F& f) {
     Real m = 0;

@@ -15,9 +15,6 @@ public:
     GridView view() const;
     const std::vector<Index>& order() const { return order_; }
     int cell_count() const { return nc_[0] * nc_[1] * nc_[2]; }
-    Vec3 lo() const { return {view_.lo[0], view_.lo[1], view_.lo[2]}; }
-    Vec3 length() const { return {view_.length[0], view_.length[1], view_.length[2]}; }
-    bool periodic(int d) const { return view_.periodic[d] != 0; }
 
 private:
     std::array<int, 3> nc_{1, 1, 1};

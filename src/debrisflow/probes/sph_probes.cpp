@@ -11,14 +11,13 @@ PointSample interpolate(const sph::SphSolver& solver, Vec3 x) {
     std::visit(
         [&](const auto& kernel) {
             grid.for_each_neighbor(
-                -1, x, s.x.data(), s.y.data(), s.z.data(), [&](Index j, Vec3 r, Real r2) {
+                -1, x, s.x.data(), s.y.data(), s.z.data(), [&](Index j, Vec3, Real r2) {
                     if (s.kind[j] != std::uint8_t(particles::Kind::fluid)) return;
                     const Real w = kernel.w(std::sqrt(r2)) * s.mass[j] / s.rho[j];
                     out.weight += w;
                     out.p += w * s.p[j];
                     out.rho += w * s.rho[j];
                     out.v += w * Vec3{s.vx[j], s.vy[j], s.vz[j]};
-                    (void)r;
                 });
         },
         solver.models().kernel);

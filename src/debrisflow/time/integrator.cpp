@@ -55,14 +55,6 @@ RunResult Integrator::run(Real t0, Real t_end) {
         while (info.t < t_end - Real(1e-12) * (1 + t_end)) {
             call_hooks(Hook::step_begin, info);
             DtLimit lim = stable_dt();
-            if (fixed_dt_ > 0) {
-                if (fixed_dt_ > lim.dt)
-                    throw InstabilityError(fmt::format(
-                        "the fixed time step {:.4g} s exceeds the stable step {:.4g} s ({}) "
-                        "at t = {:.6g} s",
-                        fixed_dt_, lim.dt, lim.limiter, info.t));
-                lim = {fixed_dt_, "fixed"};
-            }
             if (lim.dt < dt_floor)
                 throw InstabilityError(fmt::format(
                     "time step collapsed at t = {:.6g} s: dt = {:.3g} s ({}) is below {:.3g} x "

@@ -45,10 +45,6 @@ public:
     void add_phase(Phase* p) { phases_.push_back(p); }
     void add_hook(Hook where, Callback f) { hooks_.push_back({where, std::move(f)}); }
     void add_observer(Schedule when, Callback f) { observers_.push_back({when, std::move(f)}); }
-    // dt below min_dt_fraction x the first step's dt stops the run (dt collapse watchdog).
-    void set_min_dt_fraction(Real f) { min_dt_fraction_ = f; }
-    // An optional fixed step; it must not exceed the stable one.
-    void set_fixed_dt(Real dt) { fixed_dt_ = dt; }
     void set_scheme(Scheme s, int euler_every = 40) {
         scheme_ = s;
         euler_every_ = euler_every;
@@ -77,8 +73,8 @@ private:
     std::vector<Phase*> phases_;
     std::vector<HookEntry> hooks_;
     std::vector<ObserverEntry> observers_;
-    Real min_dt_fraction_ = 1e-3;
-    Real fixed_dt_ = 0;
+    // dt below this fraction of the first step's dt stops the run (dt collapse watchdog).
+    static constexpr Real min_dt_fraction_ = 1e-3;
     int reorder_every_ = 1;
     Scheme scheme_ = Scheme::symplectic;
     int euler_every_ = 40;
