@@ -1,0 +1,74 @@
+#pragma once
+#include "debrisflow/core/vec3_k.hpp"
+#include "debrisflow/dem/contact_laws_k.hpp"
+
+namespace debrisflow::dem {
+
+// History carried by a contact from step to step: the tangential spring displacement xi and
+// the elastic-plastic rolling moment.
+struct ContactHistory {
+    Vec3 xi;
+    Vec3 mroll;
+};
+
+struct ContactResult {
+    Vec3 force; // on grain i (the grain on the +n side), total
+    Vec3 ft;    // tangential part of it
+    Vec3 mroll; // rolling resistance moment on grain i (j receives -mroll)
+    Real fn;    // normal force magnitude
+};
+
+// Keeps the tangential spring in the current tangent plane with its length unchanged
+// (rigid rotation of the contact frame, as LIGGGHTS does).
+DF_HD inline Vec3 rotate_into_plane(Vec3 v, Vec3 n) {
+    const Real m2 = dot(v, v);
+    if (m2 == 0) return v;
+    Vec3 t = v - dot(v, n) * n;
+    const Real t2 = dot(t, t);
+    return t2 > 0 ? std::sqrt(m2 / t2) * t : Vec3{};
+}
+
+// One contact: normal law by name, incremental tangential spring-dashpot with Coulomb limit
+// |F_t| <= mu F_n (x tanh(8 |v_t|) for DCDEM), and optional rolling resistance:
+// constant torque M_r = -mu_r R* F_n w_r/|w_r| (Zhou et al. 1999) or the elastic-plastic
+// spring M_r += -k_r w_r dt, k_r = 2.25 k_n mu_r^2 R*^2, |M_r| <= mu_r R* F_n (Ai et al. 2011).
+// n points from j (or the wall) to i; vrel is the contact-point velocity of i relative to j;
+// wrel = w_i - w_j.
+DF_HD inline ContactResult resolve_contact(const PairParams& p, Real delta, Vec3 n, Vec3 vrel,
+                                           Vec3 wrel, Real r_eff, Real m_eff, Real dt,
+                                           ContactHistory& h) {
+    const Real vn = dot(vrel, n);
+    const Vec3 vt = vrel - vn * n;
+    const Real vt_mag = norm(vt);
+    Real factor = 1;
+    const NormalResponse r =
+        normal_response(p, ContactInput{delta, -vn, r_eff, m_eff}, vt_mag, factor);
+    Vec3 xi = rotate_into_plane(h.xi, n);
+    xi += dt * vt;
+    Vec3 ft = -r.kt * xi - r.gt * vt;
+    const Real limit = r.friction * factor;
+    const Real ft_mag = norm(ft);
+    if (ft_mag > limit) {
+        ft = ft_mag > 0 ? (limit / ft_mag) * ft : Vec3{};
+        xi = r.kt > 0 ? (Real(-1) / r.kt) * (ft + r.gt * vt) : Vec3{};
+    }
+    h.xi = xi;
+    Vec3 mroll{};
+    if (p.rolling != RollingId::none && r.fn > 0) {
+        const Vec3 wr = wrel - dot(wrel, n) * n;
+        const Real mmax = p.mu_roll * r_eff * r.fn;
+        if (p.rolling == RollingId::constant_torque) {
+            const Real w = norm(wr);
+            if (w > 0) mroll = (-mmax / w) * wr;
+        } else {
+            const Real kr = Real(2.25) * r.kn_tangent * p.mu_roll * p.mu_roll * r_eff * r_eff;
+            mroll = rotate_into_plane(h.mroll, n) - (kr * dt) * wr;
+            const Real m = norm(mroll);
+            if (m > mmax) mroll = (mmax / m) * mroll;
+            h.mroll = mroll;
+        }
+    }
+    return {r.fn * n + ft, ft, mroll, r.fn};
+}
+
+} // namespace debrisflow::dem

@@ -1,0 +1,76 @@
+#pragma once
+#include "debrisflow/dem/contact_force_k.hpp"
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+namespace debrisflow::dem {
+
+// Per-grain contact candidates with their history, in fixed-capacity slots per grain:
+// grain i's slots are [i*capacity, i*capacity + count(i)). Each slot holds the partner's index
+// (a grain or a wall primitive), a persistent key (the partner grain's id or the primitive
+// index) and the contact history. Rebuilding keeps the history of every pair whose key
+// reappears, so tangential springs survive neighbour rebuilds; permute() moves the slots with
+// their grains, so they also survive reordering.
+class ContactSlots {
+public:
+    // Rebuilds the slots: candidates(i, emit) calls emit(partner, key) for grain i's partners.
+    // Grows the capacity when a grain overflows it.
+    template <class Candidates> void build(Index n, const Candidates& candidates);
+    void permute(const std::vector<Index>& perm);
+    void clear_history() { std::fill(hist_.begin(), hist_.end(), ContactHistory{}); }
+
+    Index capacity() const { return cap_; }
+    Index count(Index i) const { return count_[std::size_t(i)]; }
+    const Index* partners() const { return partner_.data(); }
+    ContactHistory* history() { return hist_.data(); }
+    std::size_t slots() const;
+
+private:
+    Index cap_ = 8;
+    std::vector<Index> count_, partner_, old_count_;
+    std::vector<std::uint32_t> key_, old_key_;
+    std::vector<ContactHistory> hist_, old_hist_;
+};
+
+template <class Candidates> void ContactSlots::build(Index n, const Candidates& candidates) {
+    const bool had = count_.size() == std::size_t(n);
+    const Index old_cap = cap_;
+    old_count_.swap(count_);
+    old_key_.swap(key_);
+    old_hist_.swap(hist_);
+    if (!had) old_count_.assign(std::size_t(n), 0);
+    for (;;) {
+        const Index cap = cap_;
+        count_.assign(std::size_t(n), 0);
+        partner_.resize(std::size_t(n) * std::size_t(cap));
+        key_.resize(partner_.size());
+        hist_.assign(partner_.size(), ContactHistory{});
+        Index worst = 0;
+#pragma omp parallel for schedule(dynamic, 256) reduction(max : worst)
+        for (Index i = 0; i < n; ++i) {
+            const std::size_t base = std::size_t(i) * std::size_t(cap);
+            const std::size_t old_base = std::size_t(i) * std::size_t(old_cap);
+            const Index old_c = old_count_[std::size_t(i)];
+            Index c = 0;
+            candidates(i, [&](Index partner, std::uint32_t key) {
+                if (c < cap) {
+                    partner_[base + std::size_t(c)] = partner;
+                    key_[base + std::size_t(c)] = key;
+                    for (Index k = 0; k < old_c; ++k)
+                        if (old_key_[old_base + std::size_t(k)] == key) {
+                            hist_[base + std::size_t(c)] = old_hist_[old_base + std::size_t(k)];
+                            break;
+                        }
+                }
+                ++c;
+            });
+            count_[std::size_t(i)] = c;
+            worst = std::max(worst, c);
+        }
+        if (worst <= cap) return;
+        cap_ = worst + worst / 4 + 2; // history still in old_*: retry with room
+    }
+}
+
+} // namespace debrisflow::dem

@@ -1,0 +1,402 @@
+#include "debrisflow/dem/dem_solver.hpp"
+#include "debrisflow/core/error.hpp"
+#include "debrisflow/core/stopwatch.hpp"
+#include "debrisflow/dem/grain_contact_k.hpp"
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+#include <omp.h>
+
+namespace debrisflow::dem {
+
+DemSolver::DemSolver(const DemParams& params, GrainSet& grains, WallSet& walls,
+                     std::vector<Material> materials, const std::vector<PairOverride>& overrides,
+                     const sph::Domain& domain)
+    : params_(params), grains_(grains), walls_(walls), materials_(std::move(materials)),
+      table_(build_pair_table(materials_, overrides, params.rolling)), domain_(domain) {
+    for (Real r : grains_.radius) max_radius_ = std::max(max_radius_, r);
+    skin_ = params_.skin * 2 * max_radius_;
+    if (grains_.size() > 0) {
+        // The grid covers the domain; grains outside it stop the run (check_health).
+        grid_.configure(domain_.lo, domain_.hi, 2 * max_radius_ + skin_, params_.dim,
+                        domain_.periodic);
+    }
+    auto_dt_ = compute_automatic_dt();
+    dt_ = params_.dt > 0 ? params_.dt : auto_dt_.dt;
+}
+
+time::DtLimit DemSolver::compute_automatic_dt() const {
+    const Index n = grains_.size();
+    const int nm = int(materials_.size());
+    if (n == 0) return {std::numeric_limits<Real>::max(), "no grains"};
+    std::vector<Real> mmin(std::size_t(nm), std::numeric_limits<Real>::max()), rmin = mmin;
+    Real vmax = 0;
+    for (Index i = 0; i < n; ++i) {
+        const std::size_t m = grains_.material[std::size_t(i)];
+        mmin[m] = std::min(mmin[m], grains_.mass[std::size_t(i)]);
+        rmin[m] = std::min(rmin[m], grains_.radius[std::size_t(i)]);
+        vmax = std::max(vmax, std::hypot(grains_.vx[std::size_t(i)], grains_.vy[std::size_t(i)],
+                                         grains_.vz[std::size_t(i)]));
+    }
+    Real vref = params_.reference_velocity;
+    if (vref <= 0) {
+        const Real height = domain_.hi.z - domain_.lo.z;
+        vref = std::max({vmax, std::sqrt(2 * norm(params_.gravity) * height), Real(1)});
+    }
+    const Real pi = 3.14159265358979323846;
+    time::DtLimit best{std::numeric_limits<Real>::max(), ""};
+    auto consider = [&](Real dt, std::string why) {
+        if (dt < best.dt) best = {dt, std::move(why)};
+    };
+    std::vector<int> partners; // grain materials, wall materials, and "own" (-1)
+    for (int a = 0; a < nm; ++a)
+        if (mmin[std::size_t(a)] < std::numeric_limits<Real>::max()) partners.push_back(a);
+    const std::size_t grain_partners = partners.size();
+    for (const auto& w : walls_.walls()) partners.push_back(w.material);
+    for (int a = 0; a < nm; ++a) {
+        if (mmin[std::size_t(a)] == std::numeric_limits<Real>::max()) continue;
+        const Material& ma = materials_[std::size_t(a)];
+        for (std::size_t k = 0; k < partners.size(); ++k) {
+            const int b = partners[k] < 0 ? a : partners[k];
+            const bool wall = k >= grain_partners;
+            const PairParams& p = table_[std::size_t(a * nm + b)];
+            const Real m1 = mmin[std::size_t(a)], r1 = rmin[std::size_t(a)];
+            const Real meff = wall ? m1 : m1 * mmin[std::size_t(b)] / (m1 + mmin[std::size_t(b)]);
+            const Real reff = wall ? r1 : r1 * rmin[std::size_t(b)] / (r1 + rmin[std::size_t(b)]);
+            const std::string pair =
+                ma.name + "-" + (wall ? "wall" : materials_[std::size_t(b)].name);
+            if (p.law == LawId::linear) {
+                // Contact duration of the damped linear oscillator: pi / (w0 sqrt(1 - zeta^2)).
+                const Real w0 = std::sqrt(std::max(p.kn, p.kt) / meff);
+                consider(params_.safety * pi / (w0 * std::sqrt(1 - p.damping * p.damping)),
+                         fmt::format("{} x linear contact time ({})", params_.safety, pair));
+            } else {
+                // Hertz contact time 2.868 (m*^2 / (E*^2 R* v))^(1/5) (Johnson 1985).
+                const Real tc =
+                    2.868 * std::pow(meff * meff / (p.e_star * p.e_star * reff * vref), Real(0.2));
+                consider(params_.safety * tc,
+                         fmt::format("{} x Hertz contact time at {:.3g} m/s ({})", params_.safety,
+                                     vref, pair));
+                // Rayleigh time pi r sqrt(rho/G) / (0.1631 nu + 0.8766) of the grain material.
+                if (!ma.rigid && ma.youngs_modulus > 0) {
+                    const Real g = ma.youngs_modulus / (2 * (1 + ma.poisson));
+                    const Real tr =
+                        pi * r1 * std::sqrt(ma.density / g) / (0.1631 * ma.poisson + 0.8766);
+                    consider(0.2 * tr, fmt::format("0.2 x Rayleigh time ({})", ma.name));
+                }
+            }
+        }
+    }
+    return best;
+}
+
+time::DtLimit DemSolver::stable_dt() const {
+    if (params_.subcycle) return {std::numeric_limits<Real>::max(), "sub-cycled"};
+    return {dt_, params_.dt > 0 ? "user dt" : auto_dt_.limiter};
+}
+
+void DemSolver::update_neighbors(bool) {
+    if (!built_) rebuild();
+}
+
+void DemSolver::compute_forces() {
+    if (!built_) rebuild();
+    ScopedTimer timer(t_forces_);
+    forces(0);
+}
+
+void DemSolver::rebuild() {
+    ScopedTimer timer(t_neighbors_);
+    const Index n = grains_.size();
+    built_ = true;
+    drift_ = 0;
+    ++builds_;
+    if (n == 0) return;
+    grid_.build(grains_.x.data(), grains_.y.data(), grains_.z.data(), n);
+    if (params_.reorder) {
+        const std::vector<Index> perm = grid_.order();
+        grains_.permute(perm);
+        grain_slots_.permute(perm);
+        wall_slots_.permute(perm);
+        grid_.build(grains_.x.data(), grains_.y.data(), grains_.z.data(), n);
+    }
+    const GrainView g = grains_.view();
+    const neighbors::GridView grid = grid_.view();
+    const Real skin = skin_;
+    grain_slots_.build(n, [&](Index i, auto&& emit) {
+        const Real ri = g.radius[i];
+        const std::uint32_t idi = g.id[i];
+        grid.for_each_neighbor(i, g.pos(i), g.x, g.y, g.z, [&](Index j, Vec3, Real r2) {
+            if (g.id[j] < idi) return;
+            const Real reach = ri + g.radius[j] + skin;
+            if (r2 < reach * reach) emit(j, g.id[j]);
+        });
+    });
+    const auto& prims = walls_.primitives();
+    const auto& wl = walls_.walls();
+    wall_slots_.build(n, [&](Index i, auto&& emit) {
+        const Vec3 p = g.pos(i);
+        const Real reach = g.radius[i] + skin;
+        for (std::size_t k = 0; k < prims.size(); ++k) {
+            if (!wl[std::size_t(prims[k].wall)].active) continue;
+            const Vec3 q = closest_point(prims[k], p);
+            if (wall_distance(prims[k], p, q) < reach) emit(Index(k), std::uint32_t(k));
+        }
+    });
+}
+
+void DemSolver::kick_drift(Real h) {
+    ScopedTimer timer(t_integration_);
+    GrainView g = grains_.view();
+    const Real half = Real(0.5) * h;
+    const bool plane = params_.dim == 2;
+    const sph::Domain dom = domain_;
+    Real vmax2 = 0;
+    int bad = 0;
+#pragma omp parallel for schedule(static) reduction(max : vmax2) reduction(+ : bad)
+    for (Index i = 0; i < g.n; ++i) {
+        const Real im = g.inv_mass[i], ii = g.inv_inertia[i];
+        g.vx[i] += half * g.fx[i] * im;
+        g.vy[i] = plane ? 0 : g.vy[i] + half * g.fy[i] * im;
+        g.vz[i] += half * g.fz[i] * im;
+        g.wx[i] = plane ? 0 : g.wx[i] + half * g.tx[i] * ii;
+        g.wy[i] += half * g.ty[i] * ii;
+        g.wz[i] = plane ? 0 : g.wz[i] + half * g.tz[i] * ii;
+        Real* pos[3] = {g.x + i, g.y + i, g.z + i};
+        const Real vel[3] = {g.vx[i], g.vy[i], g.vz[i]};
+        for (int d = 0; d < 3; ++d) {
+            Real x = *pos[d] + h * vel[d];
+            if (dom.periodic[d]) {
+                const Real len = dom.hi[d] - dom.lo[d];
+                if (x >= dom.hi[d]) x -= len;
+                if (x < dom.lo[d]) x += len;
+            } else if (!(plane && d == 1) && !(x >= dom.lo[d] && x <= dom.hi[d])) {
+                ++bad; // outside the domain, or NaN
+            }
+            *pos[d] = x;
+        }
+        const Real v2 = vel[0] * vel[0] + vel[1] * vel[1] + vel[2] * vel[2];
+        vmax2 = std::max(vmax2, v2);
+    }
+    if (bad > 0 || !std::isfinite(vmax2)) bad_ = true;
+    drift_ += h * (std::sqrt(vmax2) + walls_.max_speed());
+}
+
+void DemSolver::forces(Real half_kick) {
+    const Index n = grains_.size();
+    GrainView g = grains_.view();
+    const PairTable table{table_.data(), int(materials_.size())};
+    const neighbors::GridView grid = grid_.view();
+    const int nt = omp_get_max_threads();
+    buffers_.resize(std::size_t(nt));
+    for (auto& b : buffers_) b.resize(6 * std::size_t(n));
+    const Index gcap = grain_slots_.capacity();
+    const Index* gp = grain_slots_.partners();
+    ContactHistory* gh = grain_slots_.history();
+    long touching = 0;
+    Real fsum = 0;
+    const Real h_contact = current_h_, half_h = Real(0.5) * current_h_;
+#pragma omp parallel reduction(+ : touching, fsum)
+    {
+        Real* b = buffers_[std::size_t(omp_get_thread_num())].data();
+        std::fill(b, b + 6 * std::size_t(n), Real(0));
+#pragma omp for schedule(static, 64)
+        for (Index i = 0; i < n; ++i) {
+            const std::size_t base = std::size_t(i) * std::size_t(gcap);
+            const GrainState si = GrainState::load(g, i, half_h);
+            Vec3 fi{}, ti{};
+            for (Index k = 0; k < grain_slots_.count(i); ++k) {
+                const Index j = gp[base + std::size_t(k)];
+                ContactHistory& h = gh[base + std::size_t(k)];
+                const GrainState sj = GrainState::load(g, j, half_h);
+                const Vec3 r = grid.separation(si.x, sj.x);
+                const Real rs = si.r + sj.r, d2 = dot(r, r);
+                if (d2 >= rs * rs) {
+                    h = ContactHistory{};
+                    continue;
+                }
+                const GrainPairForce c =
+                    grain_pair_force(table(si.material, sj.material), si, sj, r, d2, h_contact, h);
+                fi += c.force_i;
+                ti += c.torque_i;
+                Real* bj = b + 6 * std::size_t(j);
+                bj[0] -= c.force_i.x, bj[1] -= c.force_i.y, bj[2] -= c.force_i.z;
+                bj[3] += c.torque_j.x, bj[4] += c.torque_j.y, bj[5] += c.torque_j.z;
+                fsum += norm(c.force_i);
+                ++touching;
+            }
+            Real* bi = b + 6 * std::size_t(i);
+            bi[0] += fi.x, bi[1] += fi.y, bi[2] += fi.z;
+            bi[3] += ti.x, bi[4] += ti.y, bi[5] += ti.z;
+        }
+    }
+    // Per grain: sum the thread buffers, add gravity and wall contacts, finish the kick.
+    const auto& prims = walls_.primitives();
+    auto& wl = walls_.walls();
+    const std::size_t nw = wl.size();
+    std::vector<std::uint8_t> active(nw);
+    std::vector<int> wall_mat(nw);
+    std::vector<Vec3> wall_vel(nw), wall_org(nw);
+    for (std::size_t w = 0; w < nw; ++w) {
+        active[w] = wl[w].active;
+        wall_mat[w] = wl[w].material;
+        wall_vel[w] = wl[w].velocity;
+        wall_org[w] = wl[w].origin;
+    }
+    std::vector<Real> wall_sum(6 * nw, 0);
+    const Index wcap = wall_slots_.capacity();
+    const Index* wp = wall_slots_.partners();
+    ContactHistory* wh = wall_slots_.history();
+    const Vec3 grav = params_.gravity;
+    const bool plane = params_.dim == 2;
+    const Real half = half_kick;
+#pragma omp parallel reduction(+ : touching, fsum)
+    {
+        std::vector<Real> local(6 * nw, 0);
+#pragma omp for schedule(static)
+        for (Index i = 0; i < n; ++i) {
+            Vec3 f = g.mass[i] * grav, t{};
+            for (const auto& buf : buffers_) {
+                const Real* bi = buf.data() + 6 * std::size_t(i);
+                f += Vec3{bi[0], bi[1], bi[2]};
+                t += Vec3{bi[3], bi[4], bi[5]};
+            }
+            const std::size_t base = std::size_t(i) * std::size_t(wcap);
+            const Index cw = wall_slots_.count(i);
+            if (cw > 0) {
+                const GrainState si = GrainState::load(g, i, half_h);
+                WallCandidates cand;
+                for (Index k = 0; k < cw; ++k) {
+                    const Index pidx = wp[base + std::size_t(k)];
+                    const WallPrimitive& pr = prims[std::size_t(pidx)];
+                    if (!active[std::size_t(pr.wall)]) {
+                        wh[base + std::size_t(k)] = ContactHistory{};
+                        continue;
+                    }
+                    const Vec3 q = closest_point(pr, si.x);
+                    const Real d = wall_distance(pr, si.x, q);
+                    if (d >= si.r) {
+                        wh[base + std::size_t(k)] = ContactHistory{};
+                        continue;
+                    }
+                    cand.add(k, q, d);
+                }
+                cand.sort();
+                for (int c = 0; c < cand.size; ++c) {
+                    const Index k = cand.slot[c];
+                    const WallPrimitive& pr = prims[std::size_t(wp[base + std::size_t(k)])];
+                    if (cand.covered(c, prims, wp + base, si.r)) {
+                        wh[base + std::size_t(k)] = ContactHistory{};
+                        continue;
+                    }
+                    const std::size_t w = std::size_t(pr.wall);
+                    const int mw = wall_mat[w] < 0 ? si.material : wall_mat[w];
+                    const WallContactForce c2 =
+                        wall_contact_force(table(si.material, mw), si, pr, cand.q[c], cand.d[c],
+                                           wall_vel[w], h_contact, wh[base + std::size_t(k)]);
+                    f += c2.force;
+                    t += c2.torque;
+                    const Vec3 m = cross(cand.q[c] - wall_org[w], -c2.force) - c2.mroll;
+                    Real* ws = local.data() + 6 * w;
+                    ws[0] -= c2.force.x, ws[1] -= c2.force.y, ws[2] -= c2.force.z;
+                    ws[3] += m.x, ws[4] += m.y, ws[5] += m.z;
+                    fsum += norm(c2.force);
+                    ++touching;
+                }
+            }
+            if (plane) f.y = 0, t.x = 0, t.z = 0;
+            g.fx[i] = f.x, g.fy[i] = f.y, g.fz[i] = f.z;
+            g.tx[i] = t.x, g.ty[i] = t.y, g.tz[i] = t.z;
+            if (half > 0) {
+                const Real im = g.inv_mass[i], ii = g.inv_inertia[i];
+                g.vx[i] += half * f.x * im, g.vy[i] += half * f.y * im, g.vz[i] += half * f.z * im;
+                g.wx[i] += half * t.x * ii, g.wy[i] += half * t.y * ii, g.wz[i] += half * t.z * ii;
+            }
+        }
+#pragma omp critical(dem_wall_sum)
+        for (std::size_t k = 0; k < local.size(); ++k) wall_sum[k] += local[k];
+    }
+    contacts_ = touching;
+    sum_contact_force_ = fsum;
+    for (std::size_t w = 0; w < nw; ++w) {
+        wl[w].force = {wall_sum[6 * w], wall_sum[6 * w + 1], wall_sum[6 * w + 2]};
+        wl[w].moment = {wall_sum[6 * w + 3], wall_sum[6 * w + 4], wall_sum[6 * w + 5]};
+    }
+}
+
+void DemSolver::step(Real h) {
+    current_h_ = h;
+    kick_drift(h);
+    walls_.advance(h);
+    for (auto& w : walls_.walls()) {
+        w.impulse += h * w.force; // force of the previous evaluation, held over the step
+        w.impulse_time += h;
+    }
+    if (drift_ > Real(0.5) * skin_) rebuild();
+    {
+        ScopedTimer timer(t_forces_);
+        forces(Real(0.5) * h);
+    }
+    t_ += h;
+}
+
+void DemSolver::advance(Real dt) {
+    if (!params_.subcycle) {
+        step(dt);
+        return;
+    }
+    const long n = std::max(1L, long(std::ceil(dt / dt_ - 1e-9)));
+    for (long s = 0; s < n; ++s) step(dt / Real(n));
+}
+
+void DemSolver::remove_wall(int wall) {
+    walls_.walls()[std::size_t(wall)].active = false;
+    walls_.walls()[std::size_t(wall)].force = {};
+}
+
+void DemSolver::stop_grains() {
+    for (auto* v : {&grains_.vx, &grains_.vy, &grains_.vz, &grains_.wx, &grains_.wy, &grains_.wz})
+        std::fill(v->begin(), v->end(), Real(0));
+}
+
+Real DemSolver::unbalanced_ratio() const {
+    const Index n = grains_.size();
+    if (n == 0 || contacts_ == 0) return std::numeric_limits<Real>::max();
+    Real sum = 0;
+    for (Index i = 0; i < n; ++i)
+        sum += std::hypot(grains_.fx[std::size_t(i)], grains_.fy[std::size_t(i)],
+                          grains_.fz[std::size_t(i)]);
+    return (sum / Real(n)) / mean_contact_force();
+}
+
+void DemSolver::check_health(Real t) const {
+    if (!bad_) return;
+    for (Index i = 0; i < grains_.size(); ++i) {
+        const std::size_t k = std::size_t(i);
+        const Vec3 p{grains_.x[k], grains_.y[k], grains_.z[k]};
+        const bool nan = !std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) ||
+                         !std::isfinite(grains_.vx[k]) || !std::isfinite(grains_.vz[k]);
+        bool out = false;
+        for (int d = 0; d < 3; ++d)
+            if (!(params_.dim == 2 && d == 1) && !domain_.periodic[d])
+                out = out || !(p[d] >= domain_.lo[d] && p[d] <= domain_.hi[d]);
+        if (nan || out)
+            throw InstabilityError(fmt::format(
+                "grain {} {} at t = {:.6g} s: position ({:.4g}, {:.4g}, {:.4g}) m, velocity "
+                "({:.4g}, {:.4g}, {:.4g}) m/s; domain [{:.4g}, {:.4g}, {:.4g}]-[{:.4g}, {:.4g}, "
+                "{:.4g}] m. Check the time step (dem.dt, dem.safety) and the walls",
+                grains_.id[k], nan ? "has a non-finite state" : "left the domain", t, p.x, p.y, p.z,
+                grains_.vx[k], grains_.vy[k], grains_.vz[k], domain_.lo.x, domain_.lo.y,
+                domain_.lo.z, domain_.hi.x, domain_.hi.y, domain_.hi.z));
+    }
+    throw InstabilityError(fmt::format("DEM state became non-finite at t = {:.6g} s", t));
+}
+
+void DemSolver::add_timings(time::Timings& t) const {
+    t.neighbors += t_neighbors_;
+    t.forces += t_forces_;
+    t.integration += t_integration_;
+}
+
+} // namespace debrisflow::dem

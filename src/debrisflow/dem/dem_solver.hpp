@@ -1,0 +1,86 @@
+#pragma once
+#include "debrisflow/dem/contact_slots.hpp"
+#include "debrisflow/dem/dem_params.hpp"
+#include "debrisflow/dem/grain_set.hpp"
+#include "debrisflow/dem/materials.hpp"
+#include "debrisflow/dem/wall_set.hpp"
+#include "debrisflow/neighbors/cell_grid.hpp"
+#include "debrisflow/sph/sph_solver.hpp"
+#include "debrisflow/time/phase.hpp"
+#include <vector>
+
+namespace debrisflow::dem {
+
+// Discrete element phase: spherical grains (discs in 2D) with contact laws chosen per
+// material pair, exact geometric walls, and velocity-Verlet stepping (kick, drift, forces,
+// kick) at its own stable step. When sub-cycling inside an SPH step, advance(dt) takes as
+// many DEM steps as dt needs; otherwise the DEM step limits the Integrator's dt.
+class DemSolver : public time::Phase {
+public:
+    DemSolver(const DemParams& params, GrainSet& grains, WallSet& walls,
+              std::vector<Material> materials, const std::vector<PairOverride>& overrides,
+              const sph::Domain& domain);
+
+    const char* name() const override { return "dem"; }
+    void update_neighbors(bool reorder) override;
+    void compute_forces() override;
+    void predictor(Real) override {}
+    void corrector(Real dt) override { advance(dt); }
+    void verlet_step(Real dt, bool) override { advance(dt); }
+    time::DtLimit stable_dt() const override;
+    void check_health(Real t) const override;
+    void add_timings(time::Timings& t) const override;
+
+    // Advances by dt (in sub-steps of at most the DEM step when sub-cycling).
+    void advance(Real dt);
+    // One velocity-Verlet step of size h.
+    void step(Real h);
+    // The automatic step (safety x shortest contact time, <= 0.2 Rayleigh time) and its reason.
+    time::DtLimit automatic_dt() const { return auto_dt_; }
+    Real dt() const { return dt_; }
+    Real time() const { return t_; }
+    // Removes a wall (a gate opening): its contacts end at the next step.
+    void remove_wall(int wall);
+    // Sets every grain's velocity and spin to zero (end of settling).
+    void stop_grains();
+
+    // Contacts in the last force evaluation and the mean contact force magnitude [N].
+    long contacts() const { return contacts_; }
+    Real mean_contact_force() const { return contacts_ > 0 ? sum_contact_force_ / contacts_ : 0; }
+    // PFC's equilibrium ratio: mean unbalanced force / mean contact force.
+    Real unbalanced_ratio() const;
+    long list_builds() const { return builds_; }
+
+    GrainSet& grains() { return grains_; }
+    const GrainSet& grains() const { return grains_; }
+    WallSet& walls() { return walls_; }
+    const WallSet& walls() const { return walls_; }
+    const std::vector<Material>& materials() const { return materials_; }
+    const DemParams& params() const { return params_; }
+    const sph::Domain& domain() const { return domain_; }
+
+private:
+    void rebuild();
+    void kick_drift(Real h);
+    void forces(Real half_kick);
+    time::DtLimit compute_automatic_dt() const;
+
+    DemParams params_;
+    GrainSet& grains_;
+    WallSet& walls_;
+    std::vector<Material> materials_;
+    std::vector<PairParams> table_;
+    sph::Domain domain_;
+    neighbors::CellGrid grid_;
+    ContactSlots grain_slots_, wall_slots_;
+    std::vector<std::vector<Real>> buffers_;
+    Real max_radius_ = 0, skin_ = 0, drift_ = 0, t_ = 0, dt_ = 0;
+    Real current_h_ = 0; // size of the step being taken (tangential spring increment)
+    time::DtLimit auto_dt_{0, ""};
+    bool built_ = false, bad_ = false;
+    long contacts_ = 0, builds_ = 0;
+    Real sum_contact_force_ = 0;
+    double t_neighbors_ = 0, t_forces_ = 0, t_integration_ = 0;
+};
+
+} // namespace debrisflow::dem

@@ -1,0 +1,111 @@
+#pragma once
+#include "debrisflow/dem/contact_force_k.hpp"
+#include "debrisflow/dem/grain_set.hpp"
+#include "debrisflow/dem/wall_geometry_k.hpp"
+
+namespace debrisflow::dem {
+
+// A grain's state as the contact functors need it, loaded once per grain.
+struct GrainState {
+    Vec3 x, v, w;
+    Real r, m;
+    int material;
+    // Velocities are extrapolated to the end of the step, v_n+1/2 + (h/2) a_n, so that the
+    // dashpots see the velocity at the time of the positions (second-order damping; with the
+    // half-step velocity the restitution of a strongly damped contact is off by O(dt)).
+    DF_HD static GrainState load(const GrainView& g, Index i, Real half) {
+        const Real im = half * g.inv_mass[i], ii = half * g.inv_inertia[i];
+        return {g.pos(i),
+                {g.vx[i] + im * g.fx[i], g.vy[i] + im * g.fy[i], g.vz[i] + im * g.fz[i]},
+                {g.wx[i] + ii * g.tx[i], g.wy[i] + ii * g.ty[i], g.wz[i] + ii * g.tz[i]},
+                g.radius[i],
+                g.mass[i],
+                int(g.material[i])};
+    }
+};
+
+struct GrainPairForce {
+    Vec3 force_i;            // on i; j receives -force_i
+    Vec3 torque_i, torque_j; // about each centre
+};
+
+// Contact of grains i and j with separation r = x_i - x_j, |r|^2 = d2 < (r_i + r_j)^2.
+// Contact point velocity of i relative to j: v_i - v_j - (r_i w_i + r_j w_j) x n; torques
+// -r_i n x F_t + M_r on i and -r_j n x F_t - M_r on j.
+DF_HD inline GrainPairForce grain_pair_force(const PairParams& p, const GrainState& i,
+                                             const GrainState& j, Vec3 r, Real d2, Real dt,
+                                             ContactHistory& h) {
+    const Real d = std::sqrt(d2);
+    const Vec3 n = (Real(1) / d) * r;
+    const Vec3 vrel = i.v - j.v - cross(i.r * i.w + j.r * j.w, n);
+    const Real reff = i.r * j.r / (i.r + j.r), meff = i.m * j.m / (i.m + j.m);
+    const ContactResult c =
+        resolve_contact(p, i.r + j.r - d, n, vrel, i.w - j.w, reff, meff, dt, h);
+    const Vec3 nxft = cross(n, c.ft);
+    return {c.force, -i.r * nxft + c.mroll, -j.r * nxft - c.mroll};
+}
+
+struct WallContactForce {
+    Vec3 force, torque, mroll; // on the grain
+};
+
+// Contact of a grain with a wall primitive at closest point q and distance d < r (a wall has
+// infinite mass: R* = r, m* = m). The wall moves with velocity vw.
+DF_HD inline WallContactForce wall_contact_force(const PairParams& p, const GrainState& g,
+                                                 const WallPrimitive& w, Vec3 q, Real d, Vec3 vw,
+                                                 Real dt, ContactHistory& h) {
+    Vec3 n = w.n;
+    if (w.type == PrimitiveType::triangle) {
+        const Vec3 gap = g.x - q;
+        if (d > Real(1e-12) * g.r)
+            n = (Real(1) / d) * gap;
+        else if (dot(n, gap) < 0)
+            n = -n;
+    }
+    const Vec3 vrel = g.v - vw - g.r * cross(g.w, n);
+    const ContactResult c = resolve_contact(p, g.r - d, n, vrel, g.w, g.r, g.m, dt, h);
+    return {c.force, -g.r * cross(n, c.ft) + c.mroll, c.mroll};
+}
+
+// The overlapping wall primitives of one grain, sorted by distance, so that a contact seen
+// again through a neighbouring triangle of the same surface is counted once.
+struct WallCandidates {
+    static constexpr int capacity = 16;
+    int size = 0;
+    Index slot[capacity];
+    Vec3 q[capacity];
+    Real d[capacity];
+    bool accepted[capacity];
+
+    DF_HD void add(Index k, Vec3 point, Real dist) {
+        if (size == capacity) return;
+        slot[size] = k, q[size] = point, d[size] = dist, accepted[size] = false;
+        ++size;
+    }
+    DF_HD void sort() {
+        for (int a = 1; a < size; ++a)
+            for (int b = a; b > 0 && d[b] < d[b - 1]; --b) {
+                const Index s = slot[b];
+                slot[b] = slot[b - 1], slot[b - 1] = s;
+                const Vec3 t = q[b];
+                q[b] = q[b - 1], q[b - 1] = t;
+                const Real e = d[b];
+                d[b] = d[b - 1], d[b - 1] = e;
+            }
+    }
+    // Whether candidate c's contact point lies on a closer, accepted triangle of the same wall;
+    // marks c accepted otherwise.
+    template <class Prims>
+    DF_HD bool covered(int c, const Prims& prims, const Index* partners, Real r) {
+        const WallPrimitive& pc = prims[std::size_t(partners[slot[c]])];
+        for (int a = 0; a < c; ++a) {
+            if (!accepted[a]) continue;
+            const WallPrimitive& pa = prims[std::size_t(partners[slot[a]])];
+            if (pa.wall == pc.wall && lies_on_triangle(pa, q[c], Real(1e-6) * r)) return true;
+        }
+        accepted[c] = true;
+        return false;
+    }
+};
+
+} // namespace debrisflow::dem

@@ -1,0 +1,67 @@
+#pragma once
+#include "debrisflow/core/hd.hpp"
+#include "debrisflow/core/vec3_k.hpp"
+#include <cstdint>
+#include <type_traits>
+
+namespace debrisflow::dem {
+
+enum class PrimitiveType : std::uint8_t { plane = 0, triangle = 1 };
+
+// One piece of a geometric wall: a half-space (plane through a with unit normal n, grains on
+// the +n side) or a triangle (a, b, c; n its unit normal), touched from either side.
+struct WallPrimitive {
+    Vec3 a, b, c, n;
+    PrimitiveType type;
+    std::int16_t wall; // index of the named wall it belongs to
+};
+static_assert(std::is_trivially_copyable_v<WallPrimitive>);
+
+// Closest point of triangle abc to p (Ericson 2005, Real-Time Collision Detection, 5.1.5).
+DF_HD inline Vec3 closest_on_triangle(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
+    const Vec3 ab = b - a, ac = c - a, ap = p - a;
+    const Real d1 = dot(ab, ap), d2 = dot(ac, ap);
+    if (d1 <= 0 && d2 <= 0) return a;
+    const Vec3 bp = p - b;
+    const Real d3 = dot(ab, bp), d4 = dot(ac, bp);
+    if (d3 >= 0 && d4 <= d3) return b;
+    const Real vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + (d1 / (d1 - d3)) * ab;
+    const Vec3 cp = p - c;
+    const Real d5 = dot(ab, cp), d6 = dot(ac, cp);
+    if (d6 >= 0 && d5 <= d6) return c;
+    const Real vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + (d2 / (d2 - d6)) * ac;
+    const Real va = d3 * d6 - d5 * d4;
+    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+        return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
+    const Real denom = 1 / (va + vb + vc);
+    return a + (vb * denom) * ab + (vc * denom) * ac;
+}
+
+// Contact point of a sphere centre p with a primitive: returns the point on the primitive
+// closest to p (for a plane, the foot of the perpendicular).
+DF_HD inline Vec3 closest_point(const WallPrimitive& w, Vec3 p) {
+    if (w.type == PrimitiveType::plane) return p - dot(p - w.a, w.n) * w.n;
+    return closest_on_triangle(p, w.a, w.b, w.c);
+}
+
+// Signed distance used for the overlap: along the normal for a plane (negative behind it),
+// Euclidean for a triangle.
+DF_HD inline Real wall_distance(const WallPrimitive& w, Vec3 p, Vec3 q) {
+    if (w.type == PrimitiveType::plane) return dot(p - w.a, w.n);
+    return norm(p - q);
+}
+
+// Whether q lies on triangle w (within tol): a contact whose closest point lies on a triangle
+// already in contact is the same contact seen from a neighbouring triangle (shared edge or
+// vertex), and is skipped so that flat and convex meshes push once.
+DF_HD inline bool lies_on_triangle(const WallPrimitive& w, Vec3 q, Real tol) {
+    if (w.type != PrimitiveType::triangle) return false;
+    if (std::fabs(dot(q - w.a, w.n)) > tol) return false;
+    const Vec3 c = closest_on_triangle(q, w.a, w.b, w.c);
+    const Vec3 d = c - q;
+    return dot(d, d) <= tol * tol;
+}
+
+} // namespace debrisflow::dem
