@@ -47,7 +47,7 @@ template <class Candidates> void ContactSlots::build(Index n, const Candidates& 
         key_.resize(partner_.size());
         hist_.assign(partner_.size(), ContactHistory{});
         Index worst = 0;
-#pragma omp parallel for schedule(dynamic, 256) reduction(max : worst)
+#pragma omp parallel for schedule(dynamic, 256) reduction(max : worst) if (n > 4096)
         for (Index i = 0; i < n; ++i) {
             const std::size_t base = std::size_t(i) * std::size_t(cap);
             const std::size_t old_base = std::size_t(i) * std::size_t(old_cap);

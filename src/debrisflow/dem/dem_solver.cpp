@@ -10,6 +10,11 @@
 
 namespace debrisflow::dem {
 
+namespace {
+// Below this many grains the loops run on one thread (OpenMP start-up would dominate).
+constexpr Index parallel_min = 4096;
+} // namespace
+
 DemSolver::DemSolver(const DemParams& params, GrainSet& grains, WallSet& walls,
                      std::vector<Material> materials, const std::vector<PairOverride>& overrides,
                      const sph::Domain& domain)
@@ -17,11 +22,6 @@ DemSolver::DemSolver(const DemParams& params, GrainSet& grains, WallSet& walls,
       table_(build_pair_table(materials_, overrides, params.rolling)), domain_(domain) {
     for (Real r : grains_.radius) max_radius_ = std::max(max_radius_, r);
     skin_ = params_.skin * 2 * max_radius_;
-    if (grains_.size() > 0) {
-        // The grid covers the domain; grains outside it stop the run (check_health).
-        grid_.configure(domain_.lo, domain_.hi, 2 * max_radius_ + skin_, params_.dim,
-                        domain_.periodic);
-    }
     auto_dt_ = compute_automatic_dt();
     dt_ = params_.dt > 0 ? params_.dt : auto_dt_.dt;
 }
@@ -113,6 +113,7 @@ void DemSolver::rebuild() {
     drift_ = 0;
     ++builds_;
     if (n == 0) return;
+    configure_grid();
     grid_.build(grains_.x.data(), grains_.y.data(), grains_.z.data(), n);
     if (params_.reorder) {
         const std::vector<Index> perm = grid_.order();
@@ -146,6 +147,33 @@ void DemSolver::rebuild() {
     });
 }
 
+void DemSolver::configure_grid() {
+    // Cells of one search radius over the grains' bounding box (the whole length in periodic
+    // directions), so that sparse grains in a large domain do not pay for empty cells.
+    const Index n = grains_.size();
+    Vec3 lo = domain_.hi, hi = domain_.lo;
+    const Real *x = grains_.x.data(), *y = grains_.y.data(), *z = grains_.z.data();
+    Real lx = lo.x, ly = lo.y, lz = lo.z, hx = hi.x, hy = hi.y, hz = hi.z;
+#pragma omp parallel for schedule(static) reduction(min                                            \
+                                                    : lx, ly, lz)                                  \
+    reduction(max                                                                                  \
+              : hx, hy, hz) if (n > parallel_min)
+    for (Index i = 0; i < n; ++i) {
+        lx = std::min(lx, x[i]), ly = std::min(ly, y[i]), lz = std::min(lz, z[i]);
+        hx = std::max(hx, x[i]), hy = std::max(hy, y[i]), hz = std::max(hz, z[i]);
+    }
+    lo = {lx, ly, lz}, hi = {hx, hy, hz};
+    const Real radius = 2 * max_radius_ + skin_;
+    for (int d = 0; d < 3; ++d) {
+        if (domain_.periodic[d] || !(hi[d] >= lo[d])) {
+            lo[d] = domain_.lo[d], hi[d] = domain_.hi[d];
+        } else {
+            lo[d] -= radius, hi[d] += radius;
+        }
+    }
+    grid_.configure(lo, hi, radius, params_.dim, domain_.periodic);
+}
+
 void DemSolver::kick_drift(Real h) {
     ScopedTimer timer(t_integration_);
     GrainView g = grains_.view();
@@ -154,7 +182,7 @@ void DemSolver::kick_drift(Real h) {
     const sph::Domain dom = domain_;
     Real vmax2 = 0;
     int bad = 0;
-#pragma omp parallel for schedule(static) reduction(max : vmax2) reduction(+ : bad)
+#pragma omp parallel for schedule(static) reduction(max : vmax2) reduction(+ : bad) if (g.n > parallel_min)
     for (Index i = 0; i < g.n; ++i) {
         const Real im = g.inv_mass[i], ii = g.inv_inertia[i];
         g.vx[i] += half * g.fx[i] * im;
@@ -188,7 +216,7 @@ void DemSolver::forces(Real half_kick) {
     GrainView g = grains_.view();
     const PairTable table{table_.data(), int(materials_.size())};
     const neighbors::GridView grid = grid_.view();
-    const int nt = omp_get_max_threads();
+    const int nt = n > parallel_min ? omp_get_max_threads() : 1;
     buffers_.resize(std::size_t(nt));
     for (auto& b : buffers_) b.resize(6 * std::size_t(n));
     const Index gcap = grain_slots_.capacity();
@@ -197,7 +225,7 @@ void DemSolver::forces(Real half_kick) {
     long touching = 0;
     Real fsum = 0;
     const Real h_contact = current_h_, half_h = Real(0.5) * current_h_;
-#pragma omp parallel reduction(+ : touching, fsum)
+#pragma omp parallel reduction(+ : touching, fsum) if (n > parallel_min)
     {
         Real* b = buffers_[std::size_t(omp_get_thread_num())].data();
         std::fill(b, b + 6 * std::size_t(n), Real(0));
@@ -251,7 +279,7 @@ void DemSolver::forces(Real half_kick) {
     const Vec3 grav = params_.gravity;
     const bool plane = params_.dim == 2;
     const Real half = half_kick;
-#pragma omp parallel reduction(+ : touching, fsum)
+#pragma omp parallel reduction(+ : touching, fsum) if (n > parallel_min)
     {
         std::vector<Real> local(6 * nw, 0);
 #pragma omp for schedule(static)

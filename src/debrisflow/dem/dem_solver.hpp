@@ -61,6 +61,7 @@ public:
 
 private:
     void rebuild();
+    void configure_grid();
     void kick_drift(Real h);
     void forces(Real half_kick);
     time::DtLimit compute_automatic_dt() const;
