@@ -2,6 +2,7 @@
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/exec/parallel.hpp"
 #include "debrisflow/io/vtk_writer.hpp"
+#include "debrisflow/scenario/build_grains.hpp"
 #include "debrisflow/scenario/build_particles.hpp"
 #include <chrono>
 #include <filesystem>
@@ -11,8 +12,24 @@
 namespace debrisflow::app {
 
 Simulation::Simulation(io::CaseSpec spec) : spec_(std::move(spec)) {
-    scenario::build_particles(spec_, set_);
-    solver_ = std::make_unique<sph::SphSolver>(spec_.sph, set_, spec_.domain);
+    if (!spec_.fluids.empty()) {
+        scenario::build_particles(spec_, set_);
+        solver_ = std::make_unique<sph::SphSolver>(spec_.sph, set_, spec_.domain);
+    }
+    if (spec_.has_dem) {
+        scenario::build_grains(spec_, grains_);
+        scenario::build_dem_walls(spec_, dem_walls_);
+        dem_ = std::make_unique<dem::DemSolver>(spec_.dem.params, grains_, dem_walls_,
+                                                spec_.dem.materials, spec_.dem.overrides,
+                                                spec_.domain);
+        const auto& p = spec_.dem.params;
+        if (p.dt > 0 && p.dt > dem_->automatic_dt().dt)
+            throw InputError(fmt::format(
+                "{}: dem.dt = {:.4g} s exceeds the stable step {:.4g} s ({}); use dem.dt <= "
+                "{:.4g} or raise dem.safety",
+                spec_.file, p.dt, dem_->automatic_dt().dt, dem_->automatic_dt().limiter,
+                dem_->automatic_dt().dt));
+    }
     for (const auto& p : spec_.probes) probes_.push_back(probes::make_probe(p, spec_));
 }
 
@@ -23,6 +40,10 @@ probes::Probe& Simulation::probe(const std::string& name) {
 }
 
 std::size_t Simulation::memory_bytes() const {
+    // Grains: 19 Real + material + id, and about 12 contact slots (index, key, 6-Real history).
+    const std::size_t grains = std::size_t(grains_.size()) *
+                               (19 * sizeof(Real) + 5 + 12 * (8 + 6 * sizeof(Real)) + 6 * sizeof(Real));
+    if (!solver_) return grains;
     const std::size_t n = std::size_t(set_.size());
     // Particle fields (21 Real + kind + group + id), doubled while reordering; integrator
     // copies (7 Real); grid arrays; half pair list: half the neighbours within support + skin
@@ -31,8 +52,35 @@ std::size_t Simulation::memory_bytes() const {
     const double neighbours =
         spec_.dim == 3 ? 4.0 / 3.0 * pi * reach * reach * reach : pi * reach * reach;
     const std::size_t list = std::size_t(0.5 * neighbours * 1.25) * sizeof(Index);
-    return n * (2 * (21 * sizeof(Real) + 1 + 2 + 8) + 7 * sizeof(Real) + 3 * sizeof(Index) + list +
+    return grains + n * (2 * (21 * sizeof(Real) + 1 + 2 + 8) + 7 * sizeof(Real) + 3 * sizeof(Index) + list +
                 4 * sizeof(Real) * 2);
+}
+
+void Simulation::settle_grains() {
+    dem::DemSolver& d = *dem_;
+    d.update_neighbors(true);
+    d.compute_forces();
+    const Real dt = d.dt();
+    const long check_every = 200;
+    long steps = 0;
+    Real ratio = d.unbalanced_ratio();
+    while (ratio >= spec_.dem.settle_ratio) {
+        if (Real(steps) * dt > spec_.dem.settle_max_time)
+            throw InstabilityError(fmt::format(
+                "grains did not settle within dem.settle_max_time = {} s (mean unbalanced / "
+                "mean contact force = {:.3g}, target {})",
+                spec_.dem.settle_max_time, ratio, spec_.dem.settle_ratio));
+        for (long k = 0; k < check_every; ++k) d.step(dt);
+        steps += check_every;
+        d.check_health(Real(steps) * dt);
+        ratio = d.unbalanced_ratio();
+    }
+    d.stop_grains();
+    for (auto& w : dem_walls_.walls()) w.impulse = {}, w.impulse_time = 0;
+    log_.line(fmt::format("grains settled: {} steps ({:.4g} s), mean unbalanced / mean contact "
+                          "force = {:.3g} (< {}), {} contacts",
+                          steps, Real(steps) * dt, ratio, spec_.dem.settle_ratio, d.contacts()));
+    settled_ = true;
 }
 
 io::RunReport Simulation::run(const RunOptions& opt) {
@@ -41,30 +89,63 @@ io::RunReport Simulation::run(const RunOptions& opt) {
     report.threads = exec::max_threads();
     report.fluid = set_.count(particles::Kind::fluid);
     report.boundary = set_.count(particles::Kind::boundary);
-    report.initial_dt = solver_->initial_dt();
+    report.grains = grains_.size();
+    if (solver_) report.initial_dt = solver_->initial_dt();
+    if (dem_) {
+        report.dem_dt = {dem_->dt(), spec_.dem.params.dt > 0 ? "user dt"
+                                                             : dem_->automatic_dt().limiter};
+        if (!solver_) report.initial_dt = report.dem_dt;
+    }
     const bool files = !opt.out_dir.empty();
     log_.set_quiet(opt.quiet);
-    std::unique_ptr<io::VtkSeries> vtk;
+    std::unique_ptr<io::VtkSeries> vtk, vtk_grains;
     if (files) {
         std::filesystem::create_directories(opt.out_dir);
         log_.open(opt.out_dir + "/log.txt");
         std::ofstream(opt.out_dir + "/case.toml") << spec_.resolved_toml << "\n";
         for (auto& p : probes_) p->open(opt.out_dir + "/probes");
-        if (spec_.vtk) vtk = std::make_unique<io::VtkSeries>(opt.out_dir + "/vtk");
+        if (spec_.vtk && solver_) vtk = std::make_unique<io::VtkSeries>(opt.out_dir + "/vtk");
+        if (spec_.vtk && dem_)
+            vtk_grains = std::make_unique<io::VtkSeries>(opt.out_dir + "/vtk", "grains");
     }
-    log_.line(fmt::format("debrisflow: case '{}' ({}), {}D, dp = {} m, end time {} s", spec_.name,
-                          spec_.file, spec_.dim, spec_.dp, spec_.t_end));
-    log_.line(fmt::format("particles: {} fluid, {} boundary; threads: {}", report.fluid,
-                          report.boundary, report.threads));
-    log_.line(fmt::format("sph: kernel {}, h = {:.4g} m, c0 = {:.4g} m/s, viscosity {}, "
-                          "diffusion {}; initial dt = {:.3g} s (limited by {})",
-                          spec_.sph.kernel, spec_.sph.h, spec_.sph.c0, spec_.sph.viscosity,
-                          spec_.sph.diffusion, report.initial_dt.dt, report.initial_dt.limiter));
+    log_.line(fmt::format("debrisflow: case '{}' ({}), {}D, end time {} s", spec_.name,
+                          spec_.file, spec_.dim, spec_.t_end));
+    log_.line(fmt::format("particles: {} fluid, {} boundary, {} grains; threads: {}", report.fluid,
+                          report.boundary, report.grains, report.threads));
+    if (solver_)
+        log_.line(fmt::format("sph: dp = {} m, kernel {}, h = {:.4g} m, c0 = {:.4g} m/s, viscosity "
+                              "{}, diffusion {}; initial dt = {:.3g} s (limited by {})",
+                              spec_.dp, spec_.sph.kernel, spec_.sph.h, spec_.sph.c0,
+                              spec_.sph.viscosity, spec_.sph.diffusion, report.initial_dt.dt,
+                              report.initial_dt.limiter));
+    if (dem_)
+        log_.line(fmt::format("dem: {} grains, {:.4g} kg, {} walls; dt = {:.3g} s ({}; automatic "
+                              "{:.3g} s){}",
+                              grains_.size(), grains_.total_mass(), dem_walls_.walls().size(),
+                              dem_->dt(), report.dem_dt.limiter, dem_->automatic_dt().dt,
+                              spec_.dem.params.subcycle ? ", sub-cycled inside the SPH step" : ""));
+    if (dem_ && spec_.dem.settle && !settled_ && t_ == 0) {
+        try {
+            settle_grains();
+        } catch (const InstabilityError& e) {
+            log_.line(std::string("ERROR: settling stopped: ") + e.what());
+            throw;
+        }
+        if (files) {
+            scenario::write_grain_state(opt.out_dir + "/grains_settled.csv", grains_,
+                                        spec_.dem.materials);
+            log_.line("settled state: " + opt.out_dir +
+                      "/grains_settled.csv (reuse with packing = \"file\")");
+        }
+    }
 
     time::Integrator integ;
-    integ.add_phase(solver_.get());
-    integ.set_reorder_every(spec_.sph.reorder_every);
-    integ.set_scheme(spec_.scheme == "verlet" ? time::Scheme::verlet : time::Scheme::symplectic,
+    if (solver_) integ.add_phase(solver_.get());
+    if (dem_) integ.add_phase(dem_.get());
+    integ.set_reorder_every(solver_ ? spec_.sph.reorder_every : 1);
+    // A grains-only case takes one force evaluation per step (velocity Verlet inside the DEM).
+    integ.set_scheme(spec_.scheme == "verlet" || !solver_ ? time::Scheme::verlet
+                                                          : time::Scheme::symplectic,
                      spec_.verlet_euler_every);
     for (std::size_t w = 0; w < spec_.walls.size(); ++w) {
         if (!spec_.walls[w].remove_at) continue;
@@ -72,7 +153,8 @@ io::RunReport Simulation::run(const RunOptions& opt) {
         auto removed = std::make_shared<bool>(false);
         integ.add_hook(time::Hook::step_begin, [this, w, at, removed](const time::StepInfo& s) {
             if (*removed || s.t < at) return;
-            solver_->remove_group(std::int16_t(w));
+            if (solver_) solver_->remove_group(std::int16_t(w));
+            if (dem_) dem_->remove_wall(int(w));
             *removed = true;
             log_.line(fmt::format("t = {:.6g} s: wall '{}' removed", s.t, spec_.walls[w].name));
         });
@@ -80,12 +162,18 @@ io::RunReport Simulation::run(const RunOptions& opt) {
     for (auto& p : probes_) {
         probes::Probe* raw = p.get();
         integ.add_observer(time::Schedule::every_time(p->every()),
-                           [this, raw](const time::StepInfo& s) { raw->record(s.t, *solver_); });
+                           [this, raw](const time::StepInfo& s) {
+                               raw->record(s.t, probe_context());
+                           });
     }
-    if (vtk)
-        integ.add_observer(spec_.vtk_every > 0 ? time::Schedule::every_time(spec_.vtk_every)
-                                               : time::Schedule::every_steps(0),
-                           [this, &vtk](const time::StepInfo& s) { vtk->write(set_, s.t); });
+    const auto frames = spec_.vtk_every > 0 ? time::Schedule::every_time(spec_.vtk_every)
+                                            : time::Schedule::every_steps(0);
+    if (vtk) integ.add_observer(frames, [this, &vtk](const time::StepInfo& s) { vtk->write(set_, s.t); });
+    if (vtk_grains)
+        integ.add_observer(frames, [this, &vtk_grains](const time::StepInfo& s) {
+            vtk_grains->write(grains_, s.t);
+        });
+    const double particles = double(set_.size() + grains_.size());
     const auto wall0 = std::chrono::steady_clock::now();
     auto last_report = wall0;
     integ.add_observer(time::Schedule::every_steps(1), [&](const time::StepInfo& s) {
@@ -95,22 +183,33 @@ io::RunReport Simulation::run(const RunOptions& opt) {
             return;
         last_report = now;
         const double wall = std::chrono::duration<double>(now - wall0).count();
-        const double pss = wall > 0 ? double(set_.size()) * double(s.step) / wall : 0;
+        const double pss = wall > 0 ? particles * double(s.step) / wall : 0;
         const double eta = s.t > 0 ? wall * (spec_.t_end - s.t) / s.t : 0;
         log_.line(fmt::format("t = {:.5f} s  step {}  dt = {:.3e} s ({})  {:.3g} "
-                              "particle-steps/s  wall {:.1f} s  ETA {:.0f} s",
-                              s.t, s.step, s.dt, s.limiter, pss, wall, eta));
+                              "particle-steps/s  wall {:.1f} s  ETA {:.0f} s{}",
+                              s.t, s.step, s.dt, s.limiter, pss, wall, eta,
+                              dem_ ? fmt::format("  contacts {}", dem_->contacts()) : ""));
     });
 
+    auto finish_stats = [&]() {
+        if (solver_) {
+            report.pair_list_builds = solver_->list_builds();
+            report.pairs = solver_->pair_list().pairs();
+        }
+        if (dem_) {
+            report.dem_contacts = dem_->contacts();
+            report.dem_list_builds = dem_->list_builds();
+        }
+    };
     try {
         report.result = integ.run(t_, opt.until > 0 ? opt.until : spec_.t_end);
         t_ = report.result.t;
-        report.pair_list_builds = solver_->list_builds();
-        report.pairs = solver_->pair_list().pairs();
+        finish_stats();
     } catch (const InstabilityError& e) {
         report.status = "unstable";
         report.message = e.what();
         report.result = integ.result();
+        finish_stats();
         log_.line(std::string("ERROR: run stopped: ") + e.what());
         if (files) {
             io::write_summary(opt.out_dir + "/summary.json", spec_, report, probes_);
@@ -119,17 +218,19 @@ io::RunReport Simulation::run(const RunOptions& opt) {
         throw;
     }
     const auto& r = report.result;
-    const double pss = r.wall_seconds > 0 ? double(set_.size()) * r.steps / r.wall_seconds : 0;
+    const double pss = r.wall_seconds > 0 ? particles * r.steps / r.wall_seconds : 0;
     log_.line(fmt::format("finished: {} steps to t = {:.6g} s in {:.2f} s wall, {:.3g} "
                           "particle-steps/s (neighbours {:.2f} s, forces {:.2f} s, integration "
                           "{:.2f} s, output {:.2f} s)",
                           r.steps, r.t, r.wall_seconds, pss, r.timings.neighbors, r.timings.forces,
                           r.timings.integration, r.timings.output));
     if (files) {
+        if (dem_)
+            scenario::write_grain_state(opt.out_dir + "/grains_final.csv", grains_,
+                                        spec_.dem.materials);
         io::write_summary(opt.out_dir + "/summary.json", spec_, report, probes_);
         log_.line("output: " + opt.out_dir +
-                  " (vtk/particles.pvd for ParaView, probes/*.csv, "
-                  "summary.json, log.txt)");
+                  " (vtk/*.pvd for ParaView, probes/*.csv, summary.json, log.txt)");
     }
     return report;
 }

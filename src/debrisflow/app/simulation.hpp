@@ -1,5 +1,6 @@
 #pragma once
 #include "debrisflow/core/log.hpp"
+#include "debrisflow/dem/dem_solver.hpp"
 #include "debrisflow/io/case_spec.hpp"
 #include "debrisflow/io/summary.hpp"
 #include "debrisflow/probes/probe.hpp"
@@ -16,8 +17,9 @@ struct RunOptions {
     Real until = 0;  // stop at this time instead of time.end (0: time.end)
 };
 
-// A case assembled from its spec: particles, the SPH phase, the integrator, gates, probes
-// and output observers. Used by the CLI and by the tests.
+// A case assembled from its spec: fluid particles and the SPH phase, grains, geometric walls
+// and the DEM phase (each when the case has them), the integrator, gates, probes and output
+// observers. Used by the CLI and by the tests.
 class Simulation {
 public:
     explicit Simulation(io::CaseSpec spec);
@@ -30,15 +32,27 @@ public:
     const io::CaseSpec& spec() const { return spec_; }
     particles::ParticleSet& particles() { return set_; }
     sph::SphSolver& solver() { return *solver_; }
+    bool has_fluid() const { return solver_ != nullptr; }
+    bool has_grains() const { return dem_ != nullptr; }
+    dem::DemSolver& grains() { return *dem_; }
     const std::vector<std::unique_ptr<probes::Probe>>& probes() const { return probes_; }
     probes::Probe& probe(const std::string& name);
     // Memory held by particle data and neighbour lists, in bytes (estimate).
     std::size_t memory_bytes() const;
 
 private:
+    // Runs the DEM alone, gates closed, until PFC's equilibrium ratio (mean unbalanced force /
+    // mean contact force) drops below dem.settle_ratio; then zeroes grain velocities.
+    void settle_grains();
+    probes::ProbeContext probe_context() { return {solver_.get(), dem_.get()}; }
+
     io::CaseSpec spec_;
     particles::ParticleSet set_;
     std::unique_ptr<sph::SphSolver> solver_;
+    dem::GrainSet grains_;
+    dem::WallSet dem_walls_;
+    std::unique_ptr<dem::DemSolver> dem_;
+    bool settled_ = false;
     std::vector<std::unique_ptr<probes::Probe>> probes_;
     Log log_;
     Real t_ = 0;

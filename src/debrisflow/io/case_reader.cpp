@@ -1,6 +1,7 @@
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/io/case_spec.hpp"
 #include "debrisflow/io/config_table.hpp"
+#include "debrisflow/io/dem_reader.hpp"
 #include "debrisflow/kernels/kernel.hpp"
 #include "debrisflow/sph/sph_models.hpp"
 #include <cmath>
@@ -10,12 +11,10 @@
 
 namespace debrisflow::io {
 
-namespace {
-
 ShapeSpec read_shape(const ConfigTable& t, int dim, const std::vector<std::string>& allowed) {
     ShapeSpec s;
     s.type = t.choice("shape", allowed);
-    if (s.type == "box" || s.type == "open_tank") {
+    if (s.type == "box" || s.type == "open_tank" || s.type == "channel") {
         s.min = t.vec3("min", dim);
         s.max = t.vec3("max", dim);
         for (int d = 0; d < 3; ++d) {
@@ -44,6 +43,8 @@ ShapeSpec read_shape(const ConfigTable& t, int dim, const std::vector<std::strin
     }
     return s;
 }
+
+namespace {
 
 void read_sph(const ConfigTable& t, CaseSpec& c) {
     auto& p = c.sph;
@@ -110,10 +111,29 @@ sph::Domain read_domain(const ConfigTable& t, int dim) {
 ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
     ProbeSpec p;
     p.name = t.string("name");
-    p.type = t.choice("type", {"pressure", "gauge", "velocity", "front", "wall_force"});
+    p.type = t.choice("type", {"pressure", "gauge", "velocity", "front", "wall_force", "section",
+                               "kinetic_energy", "runup", "mass_flux"});
     p.every = t.positive("every", 0.001);
+    const bool fluid_probe = p.type == "pressure" || p.type == "velocity" || p.type == "gauge" ||
+                             p.type == "front";
+    if (fluid_probe && c.fluids.empty()) t.fail("type", "a " + p.type + " probe needs a fluid");
+    const bool grain_probe = p.type == "section" || p.type == "kinetic_energy" ||
+                             p.type == "runup" || p.type == "mass_flux";
+    if (grain_probe && !c.has_dem) t.fail("type", "a " + p.type + " probe needs [[grains]]");
     if (p.type == "pressure" || p.type == "velocity" || p.type == "gauge") {
         p.position = t.vec3("position", c.dim);
+    } else if (p.type == "section" || p.type == "kinetic_energy") {
+        p.min = t.vec3("min", c.dim);
+        p.max = t.vec3("max", c.dim);
+        if (c.dim == 2) p.min.y = -1e30, p.max.y = 1e30;
+        for (int d = 0; d < 3; ++d)
+            if (!(p.max[d] > p.min[d])) t.fail("max", "must exceed min");
+        if (p.type == "section") p.bed = t.real("bed", p.min.z);
+    } else if (p.type == "mass_flux") {
+        p.position = t.vec3("point", c.dim);
+        p.normal = t.vec3("normal", c.dim);
+        if (norm(p.normal) == 0) t.fail("normal", "must be a non-zero vector");
+        p.normal = (1 / norm(p.normal)) * p.normal;
     } else if (p.type == "front") {
         const std::string a = t.choice("axis", {"x", "y", "z"}, "x");
         p.axis = a == "x" ? 0 : (a == "y" ? 1 : 2);
@@ -122,6 +142,12 @@ ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
         bool found = false;
         for (const auto& w : c.walls) found = found || w.name == p.wall;
         if (!found) t.fail("wall", "no wall named \"" + p.wall + "\"");
+        if (p.type == "wall_force") {
+            p.normal = t.vec3("normal", c.dim, {});
+            if (norm(p.normal) > 0) p.normal = (1 / norm(p.normal)) * p.normal;
+        } else {
+            p.bed = t.real("bed", c.domain.lo.z);
+        }
     }
     t.finish();
     return p;
@@ -150,7 +176,8 @@ CaseSpec read_case(const std::string& path, const std::vector<std::string>& over
     c.name = root.string("name", std::filesystem::path(path).stem().string());
     c.dim = int(root.integer("dimensions", 2));
     if (c.dim != 2 && c.dim != 3) root.fail("dimensions", "must be 2 or 3");
-    c.dp = root.positive("dp");
+    // dp is the fluid particle spacing; a grains-only case may omit it.
+    c.dp = root.tables("fluid").empty() ? root.real("dp", 0) : root.positive("dp");
 
     auto time = root.table("time");
     if (!time) root.fail("time", "missing required table [time] with key 'end'");
@@ -169,22 +196,30 @@ CaseSpec read_case(const std::string& path, const std::vector<std::string>& over
         output->finish();
     }
 
+    Vec3 gravity{0, 0, -9.81};
     auto physics = root.table("physics");
     if (physics) {
-        c.sph.gravity = physics->vec3("gravity", c.dim, {0, 0, -9.81});
+        gravity = physics->vec3("gravity", c.dim, gravity);
         physics->finish();
     }
-    if (c.dim == 2) c.sph.gravity.y = 0;
+    if (c.dim == 2) gravity.y = 0;
+    c.sph.gravity = gravity;
 
     auto domain = root.table("domain");
     if (!domain) root.fail("domain", "missing required table [domain] with min and max");
     c.domain = read_domain(*domain, c.dim);
 
+    auto fluid_tables = root.tables("fluid");
     auto sph = root.table("sph");
-    if (!sph) root.fail("sph", "missing required table [sph]");
-    read_sph(*sph, c);
+    if (!fluid_tables.empty()) {
+        if (!sph) root.fail("sph", "missing table [sph] (the case has [[fluid]] blocks)");
+        read_sph(*sph, c);
+    } else if (sph) {
+        sph->fail("c0", "[sph] given but the case has no [[fluid]]");
+    }
+    c.sph.gravity = gravity;
 
-    for (const auto& t : root.tables("fluid")) {
+    for (const auto& t : fluid_tables) {
         FluidSpec f;
         f.name = t.string("name");
         f.shape = read_shape(t, c.dim, {"box", "cylinder", "stl"});
@@ -193,7 +228,10 @@ CaseSpec read_case(const std::string& path, const std::vector<std::string>& over
         t.finish();
         c.fluids.push_back(f);
     }
-    if (c.fluids.empty()) root.fail("fluid", "a case needs at least one [[fluid]] block");
+    read_dem(root, c);
+    c.dem.params.gravity = gravity;
+    if (c.fluids.empty() && !c.has_dem)
+        root.fail("fluid", "a case needs [[fluid]] or [[grains]] blocks");
 
     const Real support = 2 * c.sph.h;
     for (const auto& t : root.tables("wall")) {
@@ -201,7 +239,9 @@ CaseSpec read_case(const std::string& path, const std::vector<std::string>& over
         w.name = t.string("name");
         for (const auto& o : c.walls)
             if (o.name == w.name) t.fail("name", "two walls are named \"" + w.name + "\"");
-        w.type = t.choice("shape", {"box", "open_tank", "plane", "stl"});
+        w.type = t.choice("shape", {"box", "open_tank", "channel", "plane", "stl"});
+        if (w.type == "channel" && !c.fluids.empty())
+            t.fail("shape", "channel walls are geometric (DEM) only; use open_tank with a fluid");
         if (w.type == "plane") {
             w.point = t.vec3("point", c.dim);
             w.normal = t.vec3("normal", c.dim);
@@ -209,10 +249,21 @@ CaseSpec read_case(const std::string& path, const std::vector<std::string>& over
             if (norm(w.normal) == 0) t.fail("normal", "must be a non-zero vector");
             w.normal = (1 / norm(w.normal)) * w.normal;
         } else {
-            w.shape = read_shape(t, c.dim, {"box", "open_tank", "stl"});
+            w.shape = read_shape(t, c.dim, {"box", "open_tank", "channel", "stl"});
         }
-        w.layers = int(t.integer("layers", long(std::ceil(support / c.dp - 1e-9))));
-        if (w.layers < 1) t.fail("layers", "must be >= 1");
+        if (!c.fluids.empty()) {
+            w.layers = int(t.integer("layers", long(std::ceil(support / c.dp - 1e-9))));
+            if (w.layers < 1) t.fail("layers", "must be >= 1");
+        }
+        if (c.has_dem) {
+            w.material = t.string("material", "");
+            const auto& mats = c.dem.materials;
+            if (!w.material.empty() &&
+                std::none_of(mats.begin(), mats.end(),
+                             [&](const auto& m) { return m.name == w.material; }))
+                t.fail("material", "no [[material]] named \"" + w.material + "\"");
+            w.velocity = t.vec3("velocity", c.dim, {});
+        }
         if (t.has("remove_at")) {
             w.remove_at = t.real("remove_at");
             if (*w.remove_at < 0) t.fail("remove_at", "must be >= 0");

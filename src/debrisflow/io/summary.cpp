@@ -27,7 +27,7 @@ void write_summary(const std::string& path, const CaseSpec& spec, const RunRepor
                    const std::vector<std::unique_ptr<probes::Probe>>& probes) {
     std::ofstream o(path);
     const auto& res = r.result;
-    const long n = r.fluid + r.boundary;
+    const long n = r.fluid + r.boundary + r.grains;
     const double pss = res.wall_seconds > 0 ? double(n) * double(res.steps) / res.wall_seconds : 0;
     o << "{\n";
     o << "  \"case\": " << quoted(spec.name) << ",\n";
@@ -35,8 +35,9 @@ void write_summary(const std::string& path, const CaseSpec& spec, const RunRepor
     if (!r.message.empty()) o << "  \"message\": " << quoted(r.message) << ",\n";
     o << "  \"dimensions\": " << spec.dim << ",\n";
     o << "  \"dp\": " << num(spec.dp) << ",\n";
-    o << fmt::format("  \"particles\": {{\"fluid\": {}, \"boundary\": {}, \"total\": {}}},\n",
-                     r.fluid, r.boundary, n);
+    o << fmt::format("  \"particles\": {{\"fluid\": {}, \"boundary\": {}, \"grains\": {}, "
+                     "\"total\": {}}},\n",
+                     r.fluid, r.boundary, r.grains, n);
     o << "  \"steps\": " << res.steps << ",\n";
     o << "  \"simulated_time\": " << num(res.t) << ",\n";
     o << "  \"end_time\": " << num(spec.t_end) << ",\n";
@@ -47,6 +48,11 @@ void write_summary(const std::string& path, const CaseSpec& spec, const RunRepor
     o << "  \"threads\": " << r.threads << ",\n";
     o << "  \"pair_list_builds\": " << r.pair_list_builds << ",\n";
     o << "  \"pair_list_entries\": " << r.pairs << ",\n";
+    if (r.grains > 0)
+        o << fmt::format("  \"dem\": {{\"dt\": {}, \"dt_limiter\": {}, \"contacts\": {}, "
+                         "\"neighbor_rebuilds\": {}}},\n",
+                         num(r.dem_dt.dt), quoted(r.dem_dt.limiter), r.dem_contacts,
+                         r.dem_list_builds);
     const auto& t = res.timings;
     o << fmt::format("  \"timings\": {{\"neighbors\": {}, \"forces\": {}, \"integration\": {}, "
                      "\"output\": {}}},\n",

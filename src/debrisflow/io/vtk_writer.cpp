@@ -10,11 +10,7 @@ namespace debrisflow::io {
 
 namespace {
 
-struct Block {
-    std::string name, type;
-    int components;
-    std::vector<char> bytes;
-};
+using Block = VtkSeries::Block;
 
 template <class T>
 Block make_block(std::string name, std::string type, int comps, const std::vector<T>& data) {
@@ -34,8 +30,8 @@ VtkSeries::VtkSeries(std::string dir, std::string base)
 void VtkSeries::write(const particles::ParticleSet& s, Real t) {
     const std::size_t n = std::size_t(s.size());
     std::vector<float> pos(3 * n), vel(3 * n), acc(3 * n), p(n), rho(n);
-    std::vector<std::int32_t> conn(n), offs(n), group(n);
-    std::vector<std::uint8_t> cell_types(n, 1), kind(s.kind);
+    std::vector<std::int32_t> group(n);
+    std::vector<std::uint8_t> kind(s.kind);
     std::vector<std::uint64_t> id(s.id);
     for (std::size_t i = 0; i < n; ++i) {
         pos[3 * i] = float(s.x[i]);
@@ -49,8 +45,6 @@ void VtkSeries::write(const particles::ParticleSet& s, Real t) {
         acc[3 * i + 2] = float(s.az[i]);
         p[i] = float(s.p[i]);
         rho[i] = float(s.rho[i]);
-        conn[i] = std::int32_t(i);
-        offs[i] = std::int32_t(i + 1);
         group[i] = s.group[i];
     }
     std::vector<Block> point_data;
@@ -61,7 +55,45 @@ void VtkSeries::write(const particles::ParticleSet& s, Real t) {
     point_data.push_back(make_block("type", "UInt8", 1, kind));
     point_data.push_back(make_block("group", "Int32", 1, group));
     point_data.push_back(make_block("id", "UInt64", 1, id));
-    Block points = make_block("points", "Float32", 3, pos);
+    write_frame(n, make_block("points", "Float32", 3, pos), point_data, "pressure", t);
+}
+
+void VtkSeries::write(const dem::GrainSet& g, Real t) {
+    const std::size_t n = std::size_t(g.size());
+    std::vector<float> pos(3 * n), vel(3 * n), spin(3 * n), force(3 * n), radius(n);
+    std::vector<std::uint8_t> mat(g.material);
+    std::vector<std::uint32_t> id(g.id);
+    for (std::size_t i = 0; i < n; ++i) {
+        const float p[3] = {float(g.x[i]), float(g.y[i]), float(g.z[i])};
+        const float v[3] = {float(g.vx[i]), float(g.vy[i]), float(g.vz[i])};
+        const float w[3] = {float(g.wx[i]), float(g.wy[i]), float(g.wz[i])};
+        const float f[3] = {float(g.fx[i]), float(g.fy[i]), float(g.fz[i])};
+        for (int d = 0; d < 3; ++d) {
+            pos[3 * i + std::size_t(d)] = p[d];
+            vel[3 * i + std::size_t(d)] = v[d];
+            spin[3 * i + std::size_t(d)] = w[d];
+            force[3 * i + std::size_t(d)] = f[d];
+        }
+        radius[i] = float(g.radius[i]);
+    }
+    std::vector<Block> point_data;
+    point_data.push_back(make_block("velocity", "Float32", 3, vel));
+    point_data.push_back(make_block("angular_velocity", "Float32", 3, spin));
+    point_data.push_back(make_block("force", "Float32", 3, force));
+    point_data.push_back(make_block("radius", "Float32", 1, radius));
+    point_data.push_back(make_block("material", "UInt8", 1, mat));
+    point_data.push_back(make_block("id", "UInt32", 1, id));
+    write_frame(n, make_block("points", "Float32", 3, pos), point_data, "radius", t);
+}
+
+void VtkSeries::write_frame(std::size_t n, Block points, const std::vector<Block>& point_data,
+                            const std::string& scalars, Real t) {
+    std::vector<std::int32_t> conn(n), offs(n);
+    std::vector<std::uint8_t> cell_types(n, 1);
+    for (std::size_t i = 0; i < n; ++i) {
+        conn[i] = std::int32_t(i);
+        offs[i] = std::int32_t(i + 1);
+    }
     std::vector<Block> cells;
     cells.push_back(make_block("connectivity", "Int32", 1, conn));
     cells.push_back(make_block("offsets", "Int32", 1, offs));
@@ -84,7 +116,7 @@ void VtkSeries::write(const particles::ParticleSet& s, Real t) {
                        "NumberOfTuples=\"1\" format=\"ascii\">{:.9g}</DataArray></FieldData>\n",
                        t);
     out << fmt::format("<Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", n, n);
-    out << "<PointData Scalars=\"pressure\" Vectors=\"velocity\">\n";
+    out << "<PointData Scalars=\"" << scalars << "\" Vectors=\"velocity\">\n";
     for (const auto& b : point_data) out << header(b);
     out << "</PointData>\n<Points>\n" << header(points) << "</Points>\n<Cells>\n";
     for (const auto& b : cells) out << header(b);

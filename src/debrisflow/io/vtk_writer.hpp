@@ -1,4 +1,5 @@
 #pragma once
+#include "debrisflow/dem/grain_set.hpp"
 #include "debrisflow/particles/particle_set.hpp"
 #include <string>
 #include <vector>
@@ -12,9 +13,19 @@ public:
     explicit VtkSeries(std::string dir, std::string base = "particles");
     // Fields: velocity, acceleration, pressure, density, type (0 fluid, 1 boundary), group, id.
     void write(const particles::ParticleSet& set, Real t);
+    // Grain fields: velocity, angular_velocity, force, radius, material, id.
+    void write(const dem::GrainSet& grains, Real t);
     int frames() const { return int(entries_.size()); }
 
+    struct Block {
+        std::string name, type;
+        int components;
+        std::vector<char> bytes;
+    };
+
 private:
+    void write_frame(std::size_t n, Block points, const std::vector<Block>& point_data,
+                     const std::string& scalars, Real t);
     void write_pvd() const;
     std::string dir_, base_;
     std::vector<std::pair<Real, std::string>> entries_;

@@ -1,6 +1,8 @@
 #include "debrisflow/probes/probe.hpp"
 #include "debrisflow/core/error.hpp"
+#include "debrisflow/probes/dem_probes.hpp"
 #include "debrisflow/probes/sph_probes.hpp"
+#include "debrisflow/probes/wall_force_probe.hpp"
 #include <filesystem>
 #include <fmt/format.h>
 #include <limits>
@@ -17,8 +19,8 @@ void Probe::open(const std::string& dir) {
     csv_ << "\n";
 }
 
-void Probe::record(Real t, const sph::SphSolver& solver) {
-    const auto v = sample(solver);
+void Probe::record(Real t, const ProbeContext& ctx) {
+    const auto v = sample(t, ctx);
     if (peak_.empty()) {
         peak_ = v;
         peak_t_.assign(v.size(), t);
@@ -55,8 +57,14 @@ std::unique_ptr<Probe> make_probe(const io::ProbeSpec& s, const io::CaseSpec& c)
     if (s.type == "velocity") return std::make_unique<VelocityProbe>(s);
     if (s.type == "gauge") return std::make_unique<GaugeProbe>(s, c);
     if (s.type == "front") return std::make_unique<FrontProbe>(s);
-    for (std::size_t w = 0; w < c.walls.size(); ++w)
-        if (c.walls[w].name == s.wall) return std::make_unique<WallForceProbe>(s, int(w), c.dim);
+    if (s.type == "section") return std::make_unique<SectionProbe>(s, c);
+    if (s.type == "kinetic_energy") return std::make_unique<KineticEnergyProbe>(s);
+    if (s.type == "mass_flux") return std::make_unique<MassFluxProbe>(s);
+    for (std::size_t w = 0; w < c.walls.size(); ++w) {
+        if (c.walls[w].name != s.wall) continue;
+        if (s.type == "runup") return std::make_unique<RunupProbe>(s, int(w));
+        return std::make_unique<WallForceProbe>(s, int(w), c);
+    }
     throw InputError("probe '" + s.name + "': unknown wall '" + s.wall + "'");
 }
 

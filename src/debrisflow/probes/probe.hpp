@@ -6,7 +6,17 @@
 #include <string>
 #include <vector>
 
+namespace debrisflow::dem {
+class DemSolver;
+}
+
 namespace debrisflow::probes {
+
+// What a probe may look at: the fluid and/or the grains (null when the case has none).
+struct ProbeContext {
+    const sph::SphSolver* sph = nullptr;
+    dem::DemSolver* dem = nullptr;
+};
 
 // A measurement taken on a schedule and written to probes/<name>.csv (first column time [s]).
 // Peak (largest value) and final value of every column go to summary.json.
@@ -16,11 +26,12 @@ public:
     const std::string& name() const { return name_; }
     // Column headers with SI units, e.g. "p [Pa]".
     virtual std::vector<std::string> columns() const = 0;
-    virtual std::vector<Real> sample(const sph::SphSolver& solver) const = 0;
+    // One sample at time t (probes that integrate over the sampling interval keep state).
+    virtual std::vector<Real> sample(Real t, const ProbeContext& ctx) = 0;
 
     Real every() const { return every_; }
     void open(const std::string& dir);
-    void record(Real t, const sph::SphSolver& solver);
+    void record(Real t, const ProbeContext& ctx);
     const std::vector<Real>& peaks() const { return peak_; }
     const std::vector<Real>& finals() const { return last_; }
     bool has_samples() const { return samples_ > 0; }

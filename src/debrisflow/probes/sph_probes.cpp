@@ -29,16 +29,16 @@ PointSample interpolate(const sph::SphSolver& solver, Vec3 x) {
     return out;
 }
 
-std::vector<Real> PressureProbe::sample(const sph::SphSolver& solver) const {
+std::vector<Real> PressureProbe::sample_fluid(const sph::SphSolver& solver) const {
     return {interpolate(solver, x_).p};
 }
 
-std::vector<Real> VelocityProbe::sample(const sph::SphSolver& solver) const {
+std::vector<Real> VelocityProbe::sample_fluid(const sph::SphSolver& solver) const {
     const PointSample s = interpolate(solver, x_);
     return {s.v.x, s.v.y, s.v.z, norm(s.v)};
 }
 
-std::vector<Real> GaugeProbe::sample(const sph::SphSolver& solver) const {
+std::vector<Real> GaugeProbe::sample_fluid(const sph::SphSolver& solver) const {
     const auto& d = solver.domain();
     bool wet = false;
     Real prev_w = 0;
@@ -55,7 +55,7 @@ std::vector<Real> GaugeProbe::sample(const sph::SphSolver& solver) const {
     return {wet ? d.hi.z : d.lo.z};
 }
 
-std::vector<Real> FrontProbe::sample(const sph::SphSolver& solver) const {
+std::vector<Real> FrontProbe::sample_fluid(const sph::SphSolver& solver) const {
     const auto& s = solver.particles();
     const std::vector<Real>& c = axis_ == 0 ? s.x : (axis_ == 1 ? s.y : s.z);
     Real m = -std::numeric_limits<Real>::max();
@@ -64,13 +64,13 @@ std::vector<Real> FrontProbe::sample(const sph::SphSolver& solver) const {
     return {m};
 }
 
-std::vector<Real> WallForceProbe::sample(const sph::SphSolver& solver) const {
+Vec3 fluid_wall_force(const sph::SphSolver& solver, int group) {
     const auto& s = solver.particles();
     Vec3 f;
     for (Index i = 0; i < s.size(); ++i)
-        if (s.kind[i] == std::uint8_t(particles::Kind::boundary) && s.group[i] == group_)
+        if (s.kind[i] == std::uint8_t(particles::Kind::boundary) && s.group[i] == group)
             f += s.mass[i] * Vec3{s.ax[i], s.ay[i], s.az[i]};
-    return {f.x, f.y, f.z, norm(f)};
+    return f;
 }
 
 } // namespace debrisflow::probes

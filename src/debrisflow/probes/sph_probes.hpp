@@ -12,25 +12,40 @@ struct PointSample {
 };
 PointSample interpolate(const sph::SphSolver& solver, Vec3 x);
 
-// Pressure at a point, as a wall-mounted sensor measures it.
-class PressureProbe : public Probe {
+// Total force of the fluid on the boundary particles of wall `group`: sum of m_i a_i.
+Vec3 fluid_wall_force(const sph::SphSolver& solver, int group);
+
+// A probe that samples the fluid.
+class FluidProbe : public Probe {
 public:
-    explicit PressureProbe(const io::ProbeSpec& s) : Probe(s.name, s.every), x_(s.position) {}
+    std::vector<Real> sample(Real, const ProbeContext& ctx) override {
+        return sample_fluid(*ctx.sph);
+    }
+    virtual std::vector<Real> sample_fluid(const sph::SphSolver& solver) const = 0;
+
+protected:
+    using Probe::Probe;
+};
+
+// Pressure at a point, as a wall-mounted sensor measures it.
+class PressureProbe : public FluidProbe {
+public:
+    explicit PressureProbe(const io::ProbeSpec& s) : FluidProbe(s.name, s.every), x_(s.position) {}
     std::vector<std::string> columns() const override { return {"p [Pa]"}; }
-    std::vector<Real> sample(const sph::SphSolver& solver) const override;
+    std::vector<Real> sample_fluid(const sph::SphSolver& solver) const override;
 
 private:
     Vec3 x_;
 };
 
 // Fluid velocity at a point.
-class VelocityProbe : public Probe {
+class VelocityProbe : public FluidProbe {
 public:
-    explicit VelocityProbe(const io::ProbeSpec& s) : Probe(s.name, s.every), x_(s.position) {}
+    explicit VelocityProbe(const io::ProbeSpec& s) : FluidProbe(s.name, s.every), x_(s.position) {}
     std::vector<std::string> columns() const override {
         return {"vx [m/s]", "vy [m/s]", "vz [m/s]", "speed [m/s]"};
     }
-    std::vector<Real> sample(const sph::SphSolver& solver) const override;
+    std::vector<Real> sample_fluid(const sph::SphSolver& solver) const override;
 
 private:
     Vec3 x_;
@@ -38,12 +53,12 @@ private:
 
 // Free-surface elevation at (x, y): scanning upward from the domain floor, the first height
 // where the kernel-sum weight falls below 0.5 (as a wave gauge sees the water column).
-class GaugeProbe : public Probe {
+class GaugeProbe : public FluidProbe {
 public:
     GaugeProbe(const io::ProbeSpec& s, const io::CaseSpec& c)
-        : Probe(s.name, s.every), x_(s.position), dz_(Real(0.25) * c.dp) {}
+        : FluidProbe(s.name, s.every), x_(s.position), dz_(Real(0.25) * c.dp) {}
     std::vector<std::string> columns() const override { return {"elevation [m]"}; }
-    std::vector<Real> sample(const sph::SphSolver& solver) const override;
+    std::vector<Real> sample_fluid(const sph::SphSolver& solver) const override;
 
 private:
     Vec3 x_;
@@ -51,33 +66,16 @@ private:
 };
 
 // Surge-front position: the largest coordinate of any fluid particle along an axis.
-class FrontProbe : public Probe {
+class FrontProbe : public FluidProbe {
 public:
-    explicit FrontProbe(const io::ProbeSpec& s) : Probe(s.name, s.every), axis_(s.axis) {}
+    explicit FrontProbe(const io::ProbeSpec& s) : FluidProbe(s.name, s.every), axis_(s.axis) {}
     std::vector<std::string> columns() const override {
         return {std::string(1, "xyz"[axis_]) + "_front [m]"};
     }
-    std::vector<Real> sample(const sph::SphSolver& solver) const override;
+    std::vector<Real> sample_fluid(const sph::SphSolver& solver) const override;
 
 private:
     int axis_;
-};
-
-// Total force of the fluid on a named wall: sum over its boundary particles of m_i a_i.
-// In 2D the force is per metre of width (N/m).
-class WallForceProbe : public Probe {
-public:
-    WallForceProbe(const io::ProbeSpec& s, int group, int dim)
-        : Probe(s.name, s.every), group_(group), unit_(dim == 2 ? "N/m" : "N") {}
-    std::vector<std::string> columns() const override {
-        return {"Fx [" + unit_ + "]", "Fy [" + unit_ + "]", "Fz [" + unit_ + "]",
-                "|F| [" + unit_ + "]"};
-    }
-    std::vector<Real> sample(const sph::SphSolver& solver) const override;
-
-private:
-    int group_;
-    std::string unit_;
 };
 
 } // namespace debrisflow::probes

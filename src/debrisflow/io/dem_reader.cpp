@@ -1,0 +1,185 @@
+#include "debrisflow/io/dem_reader.hpp"
+#include "debrisflow/dem/contact_laws_k.hpp"
+#include <algorithm>
+#include <fmt/format.h>
+
+namespace debrisflow::io {
+
+namespace {
+
+dem::Material read_material(const ConfigTable& t, const CaseSpec& c) {
+    dem::Material m;
+    m.name = t.string("name");
+    m.law = t.choice("law", dem::ContactLawRegistry::names(), "linear");
+    m.rigid = t.boolean("rigid", false);
+    m.density = t.has("density") || !m.rigid ? t.positive("density", 2650) : 0;
+    if (m.law == "linear" || t.has("kn")) {
+        m.kn = t.positive("kn");
+        m.kt = t.positive("kt", m.kn);
+    }
+    if (m.law != "linear" || t.has("youngs_modulus")) {
+        if (!m.rigid) m.youngs_modulus = t.positive("youngs_modulus");
+        m.poisson = t.real("poisson", 0.25);
+        if (m.poisson < 0 || m.poisson >= 0.5) t.fail("poisson", "must be within [0, 0.5)");
+    }
+    m.restitution = t.real("restitution", 0.5);
+    if (!(m.restitution > 0 && m.restitution <= 1)) t.fail("restitution", "must be within (0, 1]");
+    m.friction = t.real("friction", 0.5);
+    if (m.friction < 0) t.fail("friction", "must be >= 0");
+    m.rolling_friction = t.real("rolling_friction", 0);
+    if (m.rolling_friction < 0) t.fail("rolling_friction", "must be >= 0");
+    m.damping_cn = t.real("damping_cn", 1e-5);
+    if (m.damping_cn < 0) t.fail("damping_cn", "must be >= 0");
+    t.finish();
+    (void)c;
+    return m;
+}
+
+dem::PairOverride read_contact(const ConfigTable& t, const std::vector<dem::Material>& mats) {
+    dem::PairOverride o;
+    const auto names = t.strings("materials");
+    if (names.size() != 2) t.fail("materials", "expected two material names");
+    for (const auto& n : names)
+        if (std::none_of(mats.begin(), mats.end(), [&](const auto& m) { return m.name == n; }))
+            t.fail("materials", "no [[material]] named \"" + n + "\"");
+    o.a = names[0];
+    o.b = names[1];
+    if (t.has("law")) o.law = t.choice("law", dem::ContactLawRegistry::names());
+    if (t.has("kn")) o.kn = t.positive("kn");
+    if (t.has("kt")) o.kt = t.positive("kt");
+    if (t.has("restitution")) {
+        o.restitution = t.real("restitution");
+        if (!(*o.restitution > 0 && *o.restitution <= 1))
+            t.fail("restitution", "must be within (0, 1]");
+    }
+    if (t.has("friction")) o.friction = t.real("friction");
+    if (t.has("rolling_friction")) o.rolling_friction = t.real("rolling_friction");
+    if (t.has("damping_cn")) o.damping_cn = t.real("damping_cn");
+    t.finish();
+    return o;
+}
+
+SizeSpec read_size(const ConfigTable& t) {
+    SizeSpec s;
+    if (t.has("diameter")) {
+        s.diameter = t.positive("diameter");
+        s.min = s.max = s.diameter;
+        return s;
+    }
+    auto size = t.table("size");
+    if (!size) t.fail("diameter", "give a diameter or a [size] table");
+    s.distribution = size->choice("distribution", {"mono", "lognormal", "sieve"});
+    if (s.distribution == "mono") {
+        s.diameter = size->positive("diameter");
+        s.min = s.max = s.diameter;
+    } else if (s.distribution == "lognormal") {
+        s.d50 = size->positive("d50");
+        s.sigma = size->positive("sigma");
+        s.min = size->positive("min", s.d50 * std::exp(-3 * s.sigma));
+        s.max = size->positive("max", s.d50 * std::exp(3 * s.sigma));
+    } else {
+        s.sieve_sizes = size->reals("sizes");
+        s.sieve_passing = size->reals("passing");
+        if (s.sieve_sizes.size() < 2 || s.sieve_sizes.size() != s.sieve_passing.size())
+            size->fail("passing", "needs as many entries as sizes (at least two)");
+        for (std::size_t i = 1; i < s.sieve_sizes.size(); ++i) {
+            if (!(s.sieve_sizes[i] > s.sieve_sizes[i - 1]))
+                size->fail("sizes", "must increase strictly");
+            if (s.sieve_passing[i] < s.sieve_passing[i - 1])
+                size->fail("passing", "must not decrease");
+        }
+        if (s.sieve_sizes[0] <= 0) size->fail("sizes", "must be > 0");
+        if (s.sieve_passing.front() < 0 || s.sieve_passing.back() > 100)
+            size->fail("passing", "percentages must be within [0, 100]");
+        s.min = size->positive("min", s.sieve_sizes.front());
+        s.max = size->positive("max", s.sieve_sizes.back());
+    }
+    if (s.max < s.min) size->fail("max", "must be >= min");
+    size->finish();
+    return s;
+}
+
+GrainsSpec read_grains(const ConfigTable& t, const CaseSpec& c) {
+    GrainsSpec g;
+    g.name = t.string("name");
+    g.material = t.string("material");
+    const auto& mats = c.dem.materials;
+    if (std::none_of(mats.begin(), mats.end(), [&](const auto& m) { return m.name == g.material; }))
+        t.fail("material", "no [[material]] named \"" + g.material + "\"");
+    g.packing = t.choice("packing", {"random", "lattice", "single", "file"}, "random");
+    g.velocity = t.vec3("velocity", c.dim, {});
+    g.angular_velocity = t.vec3("angular_velocity", 3, {});
+    if (g.packing == "file") {
+        g.file = t.string("file");
+        t.finish();
+        return g;
+    }
+    g.size = read_size(t);
+    if (g.packing == "single") {
+        g.position = t.vec3("position", c.dim);
+    } else {
+        auto region = t.table("region");
+        if (!region) t.fail("region", "missing [grains.region] table (shape = \"box\" ...)");
+        g.region = read_shape(*region, c.dim, {"box", "cylinder", "stl"});
+        region->finish();
+        if (g.packing == "random") {
+            if (t.has("count") == t.has("mass")) t.fail("count", "give either count or mass");
+            if (t.has("count")) {
+                g.count = t.integer("count", 0);
+                if (g.count < 1) t.fail("count", "must be >= 1");
+            } else {
+                g.mass = t.positive("mass");
+            }
+            g.seed = unsigned(t.integer("seed", 1));
+        } else {
+            g.gap = t.real("gap", 0.001);
+            if (g.gap < 0) t.fail("gap", "must be >= 0");
+            if (g.size.min != g.size.max) t.fail("packing", "a lattice needs one diameter");
+        }
+    }
+    t.finish();
+    return g;
+}
+
+} // namespace
+
+void read_dem(const ConfigTable& root, CaseSpec& c) {
+    for (const auto& t : root.tables("material")) {
+        c.dem.materials.push_back(read_material(t, c));
+        for (std::size_t i = 0; i + 1 < c.dem.materials.size(); ++i)
+            if (c.dem.materials[i].name == c.dem.materials.back().name)
+                t.fail("name", "two materials are named \"" + c.dem.materials[i].name + "\"");
+    }
+    if (c.dem.materials.size() > 250) root.fail("material", "at most 250 materials");
+    for (const auto& t : root.tables("contact"))
+        c.dem.overrides.push_back(read_contact(t, c.dem.materials));
+    for (const auto& t : root.tables("grains")) {
+        c.dem.grains.push_back(read_grains(t, c));
+        if (c.dem.materials.empty()) t.fail("material", "define a [[material]] first");
+    }
+    c.has_dem = !c.dem.grains.empty();
+    auto& p = c.dem.params;
+    p.dim = c.dim;
+    auto t = root.table("dem");
+    if (!t) {
+        if (c.has_dem && c.dim == 2)
+            root.fail("dem", "a 2D case with grains needs [dem] thickness (disc thickness, m)");
+        return;
+    }
+    if (!c.has_dem) t->fail("dt", "[dem] given but no [[grains]]");
+    if (t->has("dt")) p.dt = t->positive("dt");
+    p.safety = t->positive("safety", 0.02);
+    if (p.safety > 0.3) t->fail("safety", "must be <= 0.3 (fraction of the contact time)");
+    p.skin = t->positive("skin", 0.1);
+    p.reference_velocity = t->real("reference_velocity", 0);
+    p.rolling = t->choice("rolling", {"none", "constant_torque", "epsd"}, "none");
+    p.subcycle = t->boolean("subcycle", !c.fluids.empty());
+    p.reorder = t->boolean("reorder", true);
+    c.dem.settle = t->boolean("settle", false);
+    c.dem.settle_ratio = t->positive("settle_ratio", 0.01);
+    c.dem.settle_max_time = t->positive("settle_max_time", 2);
+    if (c.dim == 2) c.dem.thickness = t->positive("thickness");
+    t->finish();
+}
+
+} // namespace debrisflow::io

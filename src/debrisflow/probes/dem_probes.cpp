@@ -1,0 +1,97 @@
+#include "debrisflow/probes/dem_probes.hpp"
+#include "debrisflow/dem/dem_solver.hpp"
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace debrisflow::probes {
+
+namespace {
+bool inside(Vec3 p, Vec3 lo, Vec3 hi) {
+    return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y && p.z >= lo.z && p.z <= hi.z;
+}
+} // namespace
+
+SectionProbe::SectionProbe(const io::ProbeSpec& s, const io::CaseSpec& c)
+    : Probe(s.name, s.every), lo_(s.min), hi_(s.max), bed_(s.bed),
+      width_(c.dim == 2 ? c.dem.thickness : s.max.y - s.min.y) {}
+
+std::vector<Real> SectionProbe::sample(Real, const ProbeContext& ctx) {
+    const auto& g = ctx.dem->grains();
+    std::vector<Real> tops;
+    Real m = 0, mv = 0, md = 0;
+    for (Index i = 0; i < g.size(); ++i) {
+        const std::size_t k = std::size_t(i);
+        if (!inside({g.x[k], g.y[k], g.z[k]}, lo_, hi_)) continue;
+        tops.push_back(g.z[k] + g.radius[k] - bed_);
+        m += g.mass[k];
+        mv += g.mass[k] * g.vx[k];
+        md += g.mass[k] * 2 * g.radius[k];
+    }
+    if (tops.empty()) return {0, 0, 0, 0, 0, 0};
+    std::sort(tops.begin(), tops.end());
+    const Real h = tops[std::min(tops.size() - 1, std::size_t(0.95 * Real(tops.size())))];
+    const Real v = mv / m, d = md / m;
+    const Vec3 grav = ctx.dem->params().gravity;
+    const Real gmag = norm(grav), cos_t = std::fabs(grav.z) / gmag;
+    const Real tan_t = std::fabs(grav.x) / std::max(std::fabs(grav.z), Real(1e-300));
+    const Real fr = h > 0 ? v / std::sqrt(gmag * h * cos_t) : 0;
+    const Real rate = h > 0 ? v / h : 0;
+    const Real savage = h > 0 && tan_t > 0 ? rate * rate * d * d / (gmag * h * tan_t) : 0;
+    const Real rho = h > 0 ? m / ((hi_.x - lo_.x) * width_ * h) : 0;
+    return {h, v, rho, fr, savage, Real(tops.size())};
+}
+
+std::vector<Real> KineticEnergyProbe::sample(Real, const ProbeContext& ctx) {
+    const auto& g = ctx.dem->grains();
+    Real ek = 0, er = 0;
+    long n = 0;
+    for (Index i = 0; i < g.size(); ++i) {
+        const std::size_t k = std::size_t(i);
+        if (!inside({g.x[k], g.y[k], g.z[k]}, lo_, hi_)) continue;
+        ek += 0.5 * g.mass[k] * (g.vx[k] * g.vx[k] + g.vy[k] * g.vy[k] + g.vz[k] * g.vz[k]);
+        er += 0.5 / g.inv_inertia[k] * (g.wx[k] * g.wx[k] + g.wy[k] * g.wy[k] + g.wz[k] * g.wz[k]);
+        ++n;
+    }
+    return {ek, er, Real(n)};
+}
+
+std::vector<Real> RunupProbe::sample(Real, const ProbeContext& ctx) {
+    const auto& g = ctx.dem->grains();
+    const auto& prims = ctx.dem->walls().primitives();
+    Real top = 0;
+    for (Index i = 0; i < g.size(); ++i) {
+        const std::size_t k = std::size_t(i);
+        const Vec3 p{g.x[k], g.y[k], g.z[k]};
+        const Real reach = 1.05 * g.radius[k];
+        for (const auto& w : prims) {
+            if (w.wall != wall_) continue;
+            if (dem::wall_distance(w, p, dem::closest_point(w, p)) < reach) {
+                top = std::max(top, p.z + g.radius[k] - bed_);
+                break;
+            }
+        }
+    }
+    return {top};
+}
+
+std::vector<Real> MassFluxProbe::sample(Real t, const ProbeContext& ctx) {
+    const auto& g = ctx.dem->grains();
+    for (Index i = 0; i < g.size(); ++i) {
+        const std::size_t k = std::size_t(i);
+        const std::uint32_t id = g.id[k];
+        if (side_.size() <= id) side_.resize(std::size_t(id) + 1, 0);
+        const Real s = dot(Vec3{g.x[k], g.y[k], g.z[k]} - point_, normal_);
+        const std::int8_t now = s >= 0 ? 1 : -1;
+        if (side_[id] != 0 && side_[id] != now) cumulative_ += now * g.mass[k];
+        side_[id] = now;
+    }
+    const Real dt = t - last_t_;
+    const Real flux = started_ && dt > 0 ? (cumulative_ - last_cumulative_) / dt : 0;
+    started_ = true;
+    last_t_ = t;
+    last_cumulative_ = cumulative_;
+    return {flux, cumulative_};
+}
+
+} // namespace debrisflow::probes

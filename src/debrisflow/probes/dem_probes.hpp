@@ -1,0 +1,72 @@
+#pragma once
+#include "debrisflow/probes/probe.hpp"
+
+namespace debrisflow::probes {
+
+// Flow section over a window [min, max] of a channel whose flow runs along +x with gravity
+// in the x-z plane (slope theta = atan(|g_x| / |g_z|)): flow depth h (95th percentile of the
+// grain tops above the bed), depth-averaged velocity v (mass-weighted mean v_x), bulk density
+// (grain mass / (window length x width x h)), Froude number v / sqrt(|g| h cos theta) and
+// Savage number (v/h)^2 d^2 / (|g| h tan theta) with d the mass-weighted mean diameter.
+class SectionProbe : public Probe {
+public:
+    SectionProbe(const io::ProbeSpec& s, const io::CaseSpec& c);
+    std::vector<std::string> columns() const override {
+        return {"h [m]",   "v [m/s]",          "rho_bulk [kg/m3]",
+                "Fr [-]",  "N_savage [-]",     "grains [-]"};
+    }
+    std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
+
+private:
+    Vec3 lo_, hi_;
+    Real bed_, width_;
+};
+
+// Kinetic energy of the grains whose centres lie in a box: translational sum 1/2 m v^2 and
+// rotational sum 1/2 I w^2.
+class KineticEnergyProbe : public Probe {
+public:
+    explicit KineticEnergyProbe(const io::ProbeSpec& s)
+        : Probe(s.name, s.every), lo_(s.min), hi_(s.max) {}
+    std::vector<std::string> columns() const override {
+        return {"E_kin [J]", "E_rot [J]", "grains [-]"};
+    }
+    std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
+
+private:
+    Vec3 lo_, hi_;
+};
+
+// Run-up on a wall: the highest grain top (z + r) above `bed` among grains touching the
+// wall (within 5 % of their radius of it); the summary's peak is the maximum run-up.
+class RunupProbe : public Probe {
+public:
+    RunupProbe(const io::ProbeSpec& s, int wall) : Probe(s.name, s.every), wall_(wall), bed_(s.bed) {}
+    std::vector<std::string> columns() const override { return {"runup [m]"}; }
+    std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
+
+private:
+    int wall_;
+    Real bed_;
+};
+
+// Mass of grains crossing a plane (point, normal), counted grain by grain from the side each
+// was on at the previous sample: cumulative net mass in the +normal direction and its rate
+// over the sampling interval.
+class MassFluxProbe : public Probe {
+public:
+    explicit MassFluxProbe(const io::ProbeSpec& s)
+        : Probe(s.name, s.every), point_(s.position), normal_(s.normal) {}
+    std::vector<std::string> columns() const override {
+        return {"flux [kg/s]", "cumulative [kg]"};
+    }
+    std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
+
+private:
+    Vec3 point_, normal_;
+    std::vector<std::int8_t> side_; // by grain id: -1, +1, 0 (not seen yet)
+    Real cumulative_ = 0, last_cumulative_ = 0, last_t_ = 0;
+    bool started_ = false;
+};
+
+} // namespace debrisflow::probes

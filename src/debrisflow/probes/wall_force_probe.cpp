@@ -1,0 +1,42 @@
+#include "debrisflow/probes/wall_force_probe.hpp"
+#include "debrisflow/dem/dem_solver.hpp"
+#include "debrisflow/probes/sph_probes.hpp"
+
+namespace debrisflow::probes {
+
+WallForceProbe::WallForceProbe(const io::ProbeSpec& s, int wall, const io::CaseSpec& c)
+    : Probe(s.name, s.every), wall_(wall), normal_(s.normal),
+      unit_(c.dim == 2 && !c.fluids.empty() ? "N/m" : "N") {}
+
+std::vector<std::string> WallForceProbe::columns() const {
+    std::vector<std::string> c{"Fx [" + unit_ + "]", "Fy [" + unit_ + "]", "Fz [" + unit_ + "]",
+                               "|F| [" + unit_ + "]"};
+    if (norm(normal_) > 0) {
+        c.push_back("Fn [" + unit_ + "]");
+        c.push_back("Fn_avg [" + unit_ + "]");
+    }
+    return c;
+}
+
+std::vector<Real> WallForceProbe::sample(Real, const ProbeContext& ctx) {
+    Vec3 f, avg;
+    if (ctx.sph) {
+        f = fluid_wall_force(*ctx.sph, wall_);
+        avg = f;
+    }
+    if (ctx.dem) {
+        auto& w = ctx.dem->walls().walls()[std::size_t(wall_)];
+        f += w.force;
+        avg += w.impulse_time > 0 ? (1 / w.impulse_time) * w.impulse : w.force;
+        w.impulse = {};
+        w.impulse_time = 0;
+    }
+    std::vector<Real> out{f.x, f.y, f.z, norm(f)};
+    if (norm(normal_) > 0) {
+        out.push_back(dot(f, normal_));
+        out.push_back(dot(avg, normal_));
+    }
+    return out;
+}
+
+} // namespace debrisflow::probes

@@ -1,0 +1,323 @@
+#include "debrisflow/scenario/build_grains.hpp"
+#include "debrisflow/core/error.hpp"
+#include "debrisflow/scenario/stl_mesh.hpp"
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <unordered_map>
+
+namespace debrisflow::scenario {
+
+namespace {
+
+constexpr Real pi = 3.14159265358979323846;
+
+int material_index(const io::CaseSpec& c, const std::string& name) {
+    for (std::size_t i = 0; i < c.dem.materials.size(); ++i)
+        if (c.dem.materials[i].name == name) return int(i);
+    throw InputError(c.file + ": no material named \"" + name + "\"");
+}
+
+void add_grain(const io::CaseSpec& c, dem::GrainSet& g, Vec3 x, Vec3 v, Vec3 w, Real d, int mat) {
+    const Real r = d / 2, rho = c.dem.materials[std::size_t(mat)].density;
+    if (c.dim == 2) {
+        x.y = 0, v.y = 0, w = {0, w.y, 0};
+        const Real m = rho * pi * r * r * c.dem.thickness;
+        g.set_spin(g.add(x, v, r, m, Real(0.5) * m * r * r, std::uint8_t(mat)), w);
+    } else {
+        const Real m = rho * Real(4) / 3 * pi * r * r * r;
+        g.set_spin(g.add(x, v, r, m, Real(0.4) * m * r * r, std::uint8_t(mat)), w);
+    }
+}
+
+// Draws diameters from the block's distribution. Sieve curves give mass passing, so sizes
+// drawn from that curve are kept with probability (d_min/d)^dim to turn mass into number.
+class SizeSampler {
+public:
+    SizeSampler(const io::SizeSpec& s, int dim, unsigned seed) : s_(s), dim_(dim), rng_(seed) {}
+    Real operator()() {
+        if (s_.distribution == "mono") return s_.diameter;
+        std::uniform_real_distribution<Real> u(0, 1);
+        for (;;) {
+            Real d;
+            if (s_.distribution == "lognormal") {
+                std::normal_distribution<Real> z(0, 1);
+                d = s_.d50 * std::exp(s_.sigma * z(rng_));
+            } else {
+                const Real p = u(rng_) * (s_.sieve_passing.back() - s_.sieve_passing.front()) +
+                               s_.sieve_passing.front();
+                std::size_t k = 1;
+                while (k + 1 < s_.sieve_passing.size() && s_.sieve_passing[k] < p) ++k;
+                const Real p0 = s_.sieve_passing[k - 1], p1 = s_.sieve_passing[k];
+                const Real f = p1 > p0 ? (p - p0) / (p1 - p0) : 0;
+                d = s_.sieve_sizes[k - 1] + f * (s_.sieve_sizes[k] - s_.sieve_sizes[k - 1]);
+                if (u(rng_) > std::pow(s_.min / d, Real(dim_))) continue;
+            }
+            if (d >= s_.min && d <= s_.max) return d;
+        }
+    }
+    std::mt19937_64& rng() { return rng_; }
+
+private:
+    io::SizeSpec s_;
+    int dim_;
+    std::mt19937_64 rng_;
+};
+
+struct Region {
+    const io::ShapeSpec& s;
+    int dim;
+    std::unique_ptr<TriangleMesh> mesh;
+    Region(const io::ShapeSpec& shape, int d) : s(shape), dim(d) {
+        if (s.type == "stl")
+            mesh = std::make_unique<TriangleMesh>(TriangleMesh::read_stl(s.file, s.scale, s.offset));
+    }
+    void bounds(Vec3& lo, Vec3& hi) const {
+        if (s.type == "box") {
+            lo = s.min, hi = s.max;
+        } else if (s.type == "cylinder") {
+            const Real r = s.radius;
+            lo = s.center - Vec3{r, r, r}, hi = s.center + Vec3{r, r, r};
+            const Vec3 top = s.center + s.length * s.axis;
+            for (int d = 0; d < 3; ++d)
+                lo[d] = std::min(lo[d], top[d] - r), hi[d] = std::max(hi[d], top[d] + r);
+        } else {
+            mesh->bounds(lo, hi);
+        }
+        if (dim == 2) lo.y = hi.y = 0;
+    }
+    // Whether a grain of radius r centred at p lies inside (centre test for meshes).
+    bool holds(Vec3 p, Real r) const {
+        if (s.type == "box") {
+            for (int d = 0; d < 3; ++d) {
+                if (dim == 2 && d == 1) continue;
+                if (p[d] - r < s.min[d] || p[d] + r > s.max[d]) return false;
+            }
+            return true;
+        }
+        if (s.type == "cylinder") {
+            const Vec3 q = p - s.center;
+            if (dim == 2) return dot(q, q) <= (s.radius - r) * (s.radius - r);
+            const Real a = dot(q, s.axis);
+            const Vec3 radial = q - a * s.axis;
+            return a >= r && a <= s.length - r && norm(radial) <= s.radius - r;
+        }
+        return mesh->contains(p);
+    }
+};
+
+// Random sequential insertion: uniform trial positions, rejected on overlap with any grain
+// already placed (hash grid of cell = largest diameter).
+void insert_random(const io::CaseSpec& c, const io::GrainsSpec& b, int mat, dem::GrainSet& g) {
+    SizeSampler sizes(b.size, c.dim, b.seed);
+    Region region(b.region, c.dim);
+    Vec3 lo, hi;
+    region.bounds(lo, hi);
+    const Real cell = b.size.max;
+    auto key = [&](Vec3 p) {
+        const long i = long(std::floor((p.x - lo.x) / cell)), j = long(std::floor((p.y - lo.y) / cell)),
+                   k = long(std::floor((p.z - lo.z) / cell));
+        return (i * 73856093L) ^ (j * 19349663L) ^ (k * 83492791L);
+    };
+    std::unordered_multimap<long, std::pair<Vec3, Real>> placed;
+    std::uniform_real_distribution<Real> u(0, 1);
+    auto& rng = sizes.rng();
+    const Real rho = c.dem.materials[std::size_t(mat)].density;
+    Real mass = 0;
+    long count = 0, failures = 0;
+    const long max_failures = 20000;
+    Real d = sizes();
+    while ((b.count > 0 && count < b.count) || (b.mass > 0 && mass < b.mass)) {
+        const Real r = d / 2;
+        Vec3 p{lo.x + u(rng) * (hi.x - lo.x), c.dim == 2 ? 0 : lo.y + u(rng) * (hi.y - lo.y),
+               lo.z + u(rng) * (hi.z - lo.z)};
+        bool ok = region.holds(p, r);
+        for (int dz = -1; ok && dz <= 1; ++dz)
+            for (int dy = -1; ok && dy <= 1; ++dy)
+                for (int dx = -1; ok && dx <= 1; ++dx) {
+                    const auto range = placed.equal_range(key(p + Vec3{dx * cell, dy * cell, dz * cell}));
+                    for (auto it = range.first; ok && it != range.second; ++it) {
+                        const Vec3 s = p - it->second.first;
+                        const Real reach = r + it->second.second;
+                        ok = dot(s, s) >= reach * reach;
+                    }
+                }
+        if (!ok) {
+            if (++failures > max_failures)
+                throw InputError(fmt::format(
+                    "{}: grains '{}': random insertion placed {} grains ({:.4g} kg) and found no "
+                    "room for more after {} tries; enlarge the region or use packing = "
+                    "\"lattice\" and settle",
+                    c.file, b.name, count, mass, max_failures));
+            continue;
+        }
+        failures = 0;
+        placed.emplace(key(p), std::make_pair(p, r));
+        add_grain(c, g, p, b.velocity, b.angular_velocity, d, mat);
+        mass += g.mass.back();
+        ++count;
+        d = sizes();
+    }
+    (void)rho;
+}
+
+void fill_lattice(const io::CaseSpec& c, const io::GrainsSpec& b, int mat, dem::GrainSet& g) {
+    Region region(b.region, c.dim);
+    Vec3 lo, hi;
+    region.bounds(lo, hi);
+    const Real d = b.size.diameter > 0 ? b.size.diameter : b.size.min, s = d * (1 + b.gap);
+    long placed = 0;
+    for (Real z = lo.z + d / 2; z <= hi.z - d / 2 + 1e-12; z += s)
+        for (Real y = c.dim == 2 ? 0 : lo.y + d / 2; y <= (c.dim == 2 ? 0 : hi.y - d / 2 + 1e-12);
+             y += (c.dim == 2 ? 1 : s))
+            for (Real x = lo.x + d / 2; x <= hi.x - d / 2 + 1e-12; x += s) {
+                const Vec3 p{x, y, z};
+                if (!region.holds(p, d / 2 * (1 - 1e-9))) continue;
+                add_grain(c, g, p, b.velocity, b.angular_velocity, d, mat);
+                ++placed;
+            }
+    if (placed == 0)
+        throw InputError(c.file + ": grains '" + b.name + "': the region holds no grain of " +
+                         "diameter " + std::to_string(d) + " m");
+}
+
+void read_state(const io::CaseSpec& c, const io::GrainsSpec& b, dem::GrainSet& g) {
+    std::filesystem::path p(b.file);
+    if (p.is_relative()) p = std::filesystem::path(c.file).parent_path() / p;
+    std::ifstream in(p);
+    if (!in) throw InputError(c.file + ": grains '" + b.name + "': cannot read " + p.string());
+    std::string line;
+    std::getline(in, line);
+    long row = 1;
+    while (std::getline(in, line)) {
+        ++row;
+        if (line.empty()) continue;
+        std::stringstream s(line);
+        std::string f[11];
+        for (auto& x : f) std::getline(s, x, ',');
+        try {
+            Real v[10];
+            for (int k = 0; k < 10; ++k) v[k] = std::stod(f[k]);
+            add_grain(c, g, {v[0], v[1], v[2]}, {v[3], v[4], v[5]}, {v[6], v[7], v[8]}, v[9],
+                      material_index(c, f[10]));
+        } catch (const std::invalid_argument&) {
+            throw InputError(fmt::format("{}:{}: malformed grain state row", p.string(), row));
+        }
+    }
+}
+
+} // namespace
+
+void build_grains(const io::CaseSpec& c, dem::GrainSet& g) {
+    for (const auto& b : c.dem.grains) {
+        const Index before = g.size();
+        if (b.packing == "file") {
+            read_state(c, b, g);
+        } else {
+            const int mat = material_index(c, b.material);
+            if (b.packing == "single")
+                add_grain(c, g, b.position, b.velocity, b.angular_velocity, b.size.diameter, mat);
+            else if (b.packing == "lattice")
+                fill_lattice(c, b, mat, g);
+            else
+                insert_random(c, b, mat, g);
+        }
+        for (Index i = before; i < g.size(); ++i)
+            for (int d = 0; d < 3; ++d) {
+                if (c.dim == 2 && d == 1) continue;
+                const Real x = d == 0 ? g.x[std::size_t(i)] : (d == 1 ? g.y[std::size_t(i)] : g.z[std::size_t(i)]);
+                if (!(x >= c.domain.lo[d] && x <= c.domain.hi[d]))
+                    throw InputError(fmt::format("{}: grains '{}' extend outside the domain in {}",
+                                                 c.file, b.name, "xyz"[d]));
+            }
+    }
+}
+
+namespace {
+
+dem::WallPrimitive triangle(Vec3 a, Vec3 b, Vec3 c) {
+    Vec3 n = cross(b - a, c - a);
+    n = (1 / norm(n)) * n;
+    return {a, b, c, n, dem::PrimitiveType::triangle, 0};
+}
+
+void quad(std::vector<dem::WallPrimitive>& out, Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+    out.push_back(triangle(a, b, c));
+    out.push_back(triangle(a, c, d));
+}
+
+// Faces of the box [lo, hi]: bottom, top, and the four sides x-, x+, y-, y+.
+void box_faces(std::vector<dem::WallPrimitive>& out, Vec3 lo, Vec3 hi, bool bottom, bool top,
+               bool xsides, bool ysides) {
+    const Vec3 p000{lo.x, lo.y, lo.z}, p100{hi.x, lo.y, lo.z}, p110{hi.x, hi.y, lo.z},
+        p010{lo.x, hi.y, lo.z}, p001{lo.x, lo.y, hi.z}, p101{hi.x, lo.y, hi.z},
+        p111{hi.x, hi.y, hi.z}, p011{lo.x, hi.y, hi.z};
+    if (bottom) quad(out, p000, p100, p110, p010);
+    if (top) quad(out, p001, p011, p111, p101);
+    if (xsides) {
+        quad(out, p000, p010, p011, p001);
+        quad(out, p100, p101, p111, p110);
+    }
+    if (ysides) {
+        quad(out, p000, p001, p101, p100);
+        quad(out, p010, p110, p111, p011);
+    }
+}
+
+} // namespace
+
+void build_dem_walls(const io::CaseSpec& c, dem::WallSet& walls) {
+    for (const auto& w : c.walls) {
+        dem::Wall wall;
+        wall.name = w.name;
+        wall.material = w.material.empty() ? -1 : material_index(c, w.material);
+        wall.velocity = w.velocity;
+        wall.remove_at = w.remove_at;
+        std::vector<dem::WallPrimitive> prims;
+        Vec3 lo = w.shape.min, hi = w.shape.max;
+        if (c.dim == 2) lo.y = -1, hi.y = 1; // a 2D case is the y = 0 slice of these walls
+        if (w.type == "plane") {
+            prims.push_back({w.point, {}, {}, w.normal, dem::PrimitiveType::plane, 0});
+            wall.origin = w.point;
+        } else if (w.type == "box") {
+            box_faces(prims, lo, hi, true, true, true, c.dim == 3);
+            wall.origin = Real(0.5) * (lo + hi);
+        } else if (w.type == "open_tank") {
+            box_faces(prims, lo, hi, true, false, true, c.dim == 3);
+            wall.origin = Real(0.5) * (lo + hi);
+        } else if (w.type == "channel") {
+            box_faces(prims, lo, hi, true, false, false, c.dim == 3);
+            wall.origin = Real(0.5) * (lo + hi);
+        } else {
+            const auto mesh = TriangleMesh::read_stl(w.shape.file, w.shape.scale, w.shape.offset);
+            for (const auto& t : mesh.triangles) {
+                if (norm(cross(t.b - t.a, t.c - t.a)) == 0) continue; // degenerate
+                prims.push_back(triangle(t.a, t.b, t.c));
+            }
+            Vec3 mlo, mhi;
+            mesh.bounds(mlo, mhi);
+            wall.origin = Real(0.5) * (mlo + mhi);
+        }
+        walls.add(wall, prims);
+    }
+}
+
+void write_grain_state(const std::string& path, const dem::GrainSet& g,
+                       const std::vector<dem::Material>& materials) {
+    std::ofstream out(path);
+    out << "x [m],y [m],z [m],vx [m/s],vy [m/s],vz [m/s],wx [rad/s],wy [rad/s],wz [rad/s],"
+           "diameter [m],material\n";
+    for (Index i = 0; i < g.size(); ++i) {
+        const std::size_t k = std::size_t(i);
+        out << fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},"
+                           "{:.17g},{:.17g},{}\n",
+                           g.x[k], g.y[k], g.z[k], g.vx[k], g.vy[k], g.vz[k], g.wx[k], g.wy[k],
+                           g.wz[k], 2 * g.radius[k], materials[g.material[k]].name);
+    }
+}
+
+} // namespace debrisflow::scenario

@@ -1,0 +1,22 @@
+#pragma once
+#include "debrisflow/dem/grain_set.hpp"
+#include "debrisflow/dem/wall_set.hpp"
+#include "debrisflow/io/case_spec.hpp"
+
+namespace debrisflow::scenario {
+
+// Creates the grains of every [[grains]] block (sizes drawn from the block's distribution,
+// placed by random non-overlapping insertion, on a lattice, singly, or read from a saved
+// state). Masses: spheres rho 4/3 pi r^3 (I = 2/5 m r^2); in 2D discs rho pi r^2 t of the
+// case's thickness t (I = 1/2 m r^2), as PFC2D.
+void build_grains(const io::CaseSpec& spec, dem::GrainSet& grains);
+
+// Geometric walls (planes and triangles) of every [[wall]] block.
+void build_dem_walls(const io::CaseSpec& spec, dem::WallSet& walls);
+
+// Saved grain state (CSV: x, y, z, vx, vy, vz, wx, wy, wz, diameter, material name), readable
+// by a [[grains]] block with packing = "file".
+void write_grain_state(const std::string& path, const dem::GrainSet& grains,
+                       const std::vector<dem::Material>& materials);
+
+} // namespace debrisflow::scenario
