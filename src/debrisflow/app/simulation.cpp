@@ -23,12 +23,11 @@ Simulation::Simulation(io::CaseSpec spec) : spec_(std::move(spec)) {
                                                 spec_.dem.materials, spec_.dem.overrides,
                                                 spec_.domain);
         const auto& p = spec_.dem.params;
-        if (p.dt > 0 && p.dt > dem_->automatic_dt().dt)
-            throw InputError(fmt::format(
-                "{}: dem.dt = {:.4g} s exceeds the stable step {:.4g} s ({}); use dem.dt <= "
-                "{:.4g} or raise dem.safety",
-                spec_.file, p.dt, dem_->automatic_dt().dt, dem_->automatic_dt().limiter,
-                dem_->automatic_dt().dt));
+        const auto stable = dem_->stability_dt();
+        if (p.dt > 0 && p.dt > stable.dt)
+            throw InputError(fmt::format("{}: dem.dt = {:.4g} s exceeds the stable step {:.4g} s "
+                                         "({}); use dem.dt <= {:.4g} s",
+                                         spec_.file, p.dt, stable.dt, stable.limiter, stable.dt));
     }
     for (const auto& p : spec_.probes) probes_.push_back(probes::make_probe(p, spec_));
 }

@@ -13,6 +13,9 @@ namespace debrisflow::dem {
 namespace {
 // Below this many grains the loops run on one thread (OpenMP start-up would dominate).
 constexpr Index parallel_min = 4096;
+// Largest step accepted from the user: a fifth of the shortest contact time (about 0.6 / w,
+// inside the 2 / w stability bound of velocity Verlet with room for several contacts).
+constexpr Real stability_fraction = 0.2;
 } // namespace
 
 DemSolver::DemSolver(const DemParams& params, GrainSet& grains, WallSet& walls,
@@ -22,11 +25,12 @@ DemSolver::DemSolver(const DemParams& params, GrainSet& grains, WallSet& walls,
       table_(build_pair_table(materials_, overrides, params.rolling)), domain_(domain) {
     for (Real r : grains_.radius) max_radius_ = std::max(max_radius_, r);
     skin_ = params_.skin * 2 * max_radius_;
-    auto_dt_ = compute_automatic_dt();
+    auto_dt_ = compute_automatic_dt(params_.safety);
+    stability_dt_ = compute_automatic_dt(stability_fraction);
     dt_ = params_.dt > 0 ? params_.dt : auto_dt_.dt;
 }
 
-time::DtLimit DemSolver::compute_automatic_dt() const {
+time::DtLimit DemSolver::compute_automatic_dt(Real safety) const {
     const Index n = grains_.size();
     const int nm = int(materials_.size());
     if (n == 0) return {std::numeric_limits<Real>::max(), "no grains"};
@@ -69,14 +73,14 @@ time::DtLimit DemSolver::compute_automatic_dt() const {
             if (p.law == LawId::linear) {
                 // Contact duration of the damped linear oscillator: pi / (w0 sqrt(1 - zeta^2)).
                 const Real w0 = std::sqrt(std::max(p.kn, p.kt) / meff);
-                consider(params_.safety * pi / (w0 * std::sqrt(1 - p.damping * p.damping)),
-                         fmt::format("{} x linear contact time ({})", params_.safety, pair));
+                consider(safety * pi / (w0 * std::sqrt(1 - p.damping * p.damping)),
+                         fmt::format("{} x linear contact time ({})", safety, pair));
             } else {
                 // Hertz contact time 2.868 (m*^2 / (E*^2 R* v))^(1/5) (Johnson 1985).
                 const Real tc =
                     2.868 * std::pow(meff * meff / (p.e_star * p.e_star * reff * vref), Real(0.2));
-                consider(params_.safety * tc,
-                         fmt::format("{} x Hertz contact time at {:.3g} m/s ({})", params_.safety,
+                consider(safety * tc,
+                         fmt::format("{} x Hertz contact time at {:.3g} m/s ({})", safety,
                                      vref, pair));
                 // Rayleigh time pi r sqrt(rho/G) / (0.1631 nu + 0.8766) of the grain material.
                 if (!ma.rigid && ma.youngs_modulus > 0) {
@@ -184,15 +188,18 @@ void DemSolver::kick_drift(Real h) {
     int bad = 0;
 #pragma omp parallel for schedule(static) reduction(max : vmax2) reduction(+ : bad) if (g.n > parallel_min)
     for (Index i = 0; i < g.n; ++i) {
+        // v_n+1/2 = v_n + (h/2) a_n drives the drift; the stored velocity is then the
+        // prediction v* = v_n+1/2 + (h/2) a_n, so that the dashpots see the velocity at the time
+        // of the positions (second-order damping); the final kick adds (h/2)(a_n+1 - a_n).
         const Real im = g.inv_mass[i], ii = g.inv_inertia[i];
-        g.vx[i] += half * g.fx[i] * im;
-        g.vy[i] = plane ? 0 : g.vy[i] + half * g.fy[i] * im;
-        g.vz[i] += half * g.fz[i] * im;
-        g.wx[i] = plane ? 0 : g.wx[i] + half * g.tx[i] * ii;
-        g.wy[i] += half * g.ty[i] * ii;
-        g.wz[i] = plane ? 0 : g.wz[i] + half * g.tz[i] * ii;
+        const Real dvx = half * g.fx[i] * im, dvy = plane ? 0 : half * g.fy[i] * im,
+                   dvz = half * g.fz[i] * im;
+        const Real vel[3] = {g.vx[i] + dvx, plane ? 0 : g.vy[i] + dvy, g.vz[i] + dvz};
+        g.vx[i] = vel[0] + dvx, g.vy[i] = vel[1] + dvy, g.vz[i] = vel[2] + dvz;
+        g.wx[i] = plane ? 0 : g.wx[i] + h * g.tx[i] * ii;
+        g.wy[i] += h * g.ty[i] * ii;
+        g.wz[i] = plane ? 0 : g.wz[i] + h * g.tz[i] * ii;
         Real* pos[3] = {g.x + i, g.y + i, g.z + i};
-        const Real vel[3] = {g.vx[i], g.vy[i], g.vz[i]};
         for (int d = 0; d < 3; ++d) {
             Real x = *pos[d] + h * vel[d];
             if (dom.periodic[d]) {
@@ -224,7 +231,7 @@ void DemSolver::forces(Real half_kick) {
     ContactHistory* gh = grain_slots_.history();
     long touching = 0;
     Real fsum = 0;
-    const Real h_contact = current_h_, half_h = Real(0.5) * current_h_;
+    const Real h_contact = current_h_;
 #pragma omp parallel reduction(+ : touching, fsum) if (n > parallel_min)
     {
         Real* b = buffers_[std::size_t(omp_get_thread_num())].data();
@@ -232,18 +239,18 @@ void DemSolver::forces(Real half_kick) {
 #pragma omp for schedule(static, 64)
         for (Index i = 0; i < n; ++i) {
             const std::size_t base = std::size_t(i) * std::size_t(gcap);
-            const GrainState si = GrainState::load(g, i, half_h);
+            const GrainState si = GrainState::load(g, i);
             Vec3 fi{}, ti{};
             for (Index k = 0; k < grain_slots_.count(i); ++k) {
                 const Index j = gp[base + std::size_t(k)];
                 ContactHistory& h = gh[base + std::size_t(k)];
-                const GrainState sj = GrainState::load(g, j, half_h);
-                const Vec3 r = grid.separation(si.x, sj.x);
-                const Real rs = si.r + sj.r, d2 = dot(r, r);
+                const Vec3 r = grid.separation(si.x, g.pos(j));
+                const Real rs = si.r + g.radius[j], d2 = dot(r, r);
                 if (d2 >= rs * rs) {
                     h = ContactHistory{};
                     continue;
                 }
+                const GrainState sj = GrainState::load(g, j);
                 const GrainPairForce c =
                     grain_pair_force(table(si.material, sj.material), si, sj, r, d2, h_contact, h);
                 fi += c.force_i;
@@ -293,7 +300,7 @@ void DemSolver::forces(Real half_kick) {
             const std::size_t base = std::size_t(i) * std::size_t(wcap);
             const Index cw = wall_slots_.count(i);
             if (cw > 0) {
-                const GrainState si = GrainState::load(g, i, half_h);
+                const GrainState si = GrainState::load(g, i);
                 WallCandidates cand;
                 for (Index k = 0; k < cw; ++k) {
                     const Index pidx = wp[base + std::size_t(k)];
@@ -334,13 +341,15 @@ void DemSolver::forces(Real half_kick) {
                 }
             }
             if (plane) f.y = 0, t.x = 0, t.z = 0;
-            g.fx[i] = f.x, g.fy[i] = f.y, g.fz[i] = f.z;
-            g.tx[i] = t.x, g.ty[i] = t.y, g.tz[i] = t.z;
             if (half > 0) {
                 const Real im = g.inv_mass[i], ii = g.inv_inertia[i];
-                g.vx[i] += half * f.x * im, g.vy[i] += half * f.y * im, g.vz[i] += half * f.z * im;
-                g.wx[i] += half * t.x * ii, g.wy[i] += half * t.y * ii, g.wz[i] += half * t.z * ii;
+                g.vx[i] += half * (f.x - g.fx[i]) * im, g.vy[i] += half * (f.y - g.fy[i]) * im;
+                g.vz[i] += half * (f.z - g.fz[i]) * im;
+                g.wx[i] += half * (t.x - g.tx[i]) * ii, g.wy[i] += half * (t.y - g.ty[i]) * ii;
+                g.wz[i] += half * (t.z - g.tz[i]) * ii;
             }
+            g.fx[i] = f.x, g.fy[i] = f.y, g.fz[i] = f.z;
+            g.tx[i] = t.x, g.ty[i] = t.y, g.tz[i] = t.z;
         }
 #pragma omp critical(dem_wall_sum)
         for (std::size_t k = 0; k < local.size(); ++k) wall_sum[k] += local[k];

@@ -37,6 +37,8 @@ public:
     void step(Real h);
     // The automatic step (safety x shortest contact time, <= 0.2 Rayleigh time) and its reason.
     time::DtLimit automatic_dt() const { return auto_dt_; }
+    // The largest step accepted from the user (0.2 x shortest contact time, 0.2 Rayleigh time).
+    time::DtLimit stability_dt() const { return stability_dt_; }
     Real dt() const { return dt_; }
     Real time() const { return t_; }
     // Removes a wall (a gate opening): its contacts end at the next step.
@@ -64,7 +66,7 @@ private:
     void configure_grid();
     void kick_drift(Real h);
     void forces(Real half_kick);
-    time::DtLimit compute_automatic_dt() const;
+    time::DtLimit compute_automatic_dt(Real safety) const;
 
     DemParams params_;
     GrainSet& grains_;
@@ -77,7 +79,7 @@ private:
     std::vector<std::vector<Real>> buffers_;
     Real max_radius_ = 0, skin_ = 0, drift_ = 0, t_ = 0, dt_ = 0;
     Real current_h_ = 0; // size of the step being taken (tangential spring increment)
-    time::DtLimit auto_dt_{0, ""};
+    time::DtLimit auto_dt_{0, ""}, stability_dt_{0, ""};
     bool built_ = false, bad_ = false;
     long contacts_ = 0, builds_ = 0;
     Real sum_contact_force_ = 0;

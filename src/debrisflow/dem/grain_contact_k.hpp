@@ -10,17 +10,8 @@ struct GrainState {
     Vec3 x, v, w;
     Real r, m;
     int material;
-    // Velocities are extrapolated to the end of the step, v_n+1/2 + (h/2) a_n, so that the
-    // dashpots see the velocity at the time of the positions (second-order damping; with the
-    // half-step velocity the restitution of a strongly damped contact is off by O(dt)).
-    DF_HD static GrainState load(const GrainView& g, Index i, Real half) {
-        const Real im = half * g.inv_mass[i], ii = half * g.inv_inertia[i];
-        return {g.pos(i),
-                {g.vx[i] + im * g.fx[i], g.vy[i] + im * g.fy[i], g.vz[i] + im * g.fz[i]},
-                {g.wx[i] + ii * g.tx[i], g.wy[i] + ii * g.ty[i], g.wz[i] + ii * g.tz[i]},
-                g.radius[i],
-                g.mass[i],
-                int(g.material[i])};
+    DF_HD static GrainState load(const GrainView& g, Index i) {
+        return {g.pos(i), g.vel(i), g.spin(i), g.radius[i], g.mass[i], int(g.material[i])};
     }
 };
 
