@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# DEM throughput: debrisflow at 1 and 2 threads and LIGGGHTS 3.8 (Debian package liggghts) on
+# one core, same physics (cases/bench/box100k.toml = bench/liggghts/box100k.in).
+# Usage: bench/run_dem_bench.sh [build dir] [steps]   (defaults: build, 5000)
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+build="${1:-$root/build}"
+steps="${2:-5000}"
+end=$(python3 -c "print($steps * 2e-7)")
+out=$(mktemp -d)
+for case in box100k flume30; do
+  for t in 1 2; do
+    "$build/debrisflow" run "$root/cases/bench/$case.toml" --out "$out/$case-$t" --threads "$t" \
+      --set time.end="$end" --quiet
+    python3 -c "import json,sys; s=json.load(open('$out/$case-$t/summary.json')); \
+print(f\"debrisflow $case threads=$t: {s['particle_steps_per_second']:.3g} particle-steps/s, \
+{s['dem']['contacts']} contacts, {s['wall_seconds']:.1f} s\")"
+  done
+done
+if command -v liggghts > /dev/null; then
+  (cd "$out" && sed "s/^run 5000/run $steps/" "$root/bench/liggghts/box100k.in" > box100k.in &&
+     liggghts -in box100k.in -echo none -log lig.log | grep "Loop time" |
+     awk -v s="$steps" '{printf "liggghts box100k 1 core: %.3g particle-steps/s (%s s)\n", 100000*s/$4, $4}')
+fi
