@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fmt/format.h>
 #include <iostream>
+#include <limits>
 
 using namespace debrisflow;
 
@@ -15,19 +16,38 @@ int check(const std::string& file, const std::vector<std::string>& sets) {
     const io::CaseSpec spec = io::read_case(file, sets);
     app::Simulation sim(spec);
     const auto& set = sim.particles();
-    const auto dt = sim.solver().initial_dt();
     const long fluid = set.count(particles::Kind::fluid);
     const long boundary = set.count(particles::Kind::boundary);
-    std::cout << fmt::format("case '{}' is valid ({}D, dp = {} m, end time {} s)\n", spec.name,
-                             spec.dim, spec.dp, spec.t_end);
-    std::cout << fmt::format("particles: {} fluid, {} boundary, {} total\n", fluid, boundary,
-                             fluid + boundary);
+    const long grains = sim.has_grains() ? sim.grains().grains().size() : 0;
+    std::cout << fmt::format("case '{}' is valid ({}D, end time {} s)\n", spec.name, spec.dim,
+                             spec.t_end);
+    std::cout << fmt::format("particles: {} fluid, {} boundary, {} grains, {} total\n", fluid,
+                             boundary, grains, fluid + boundary + grains);
     std::cout << fmt::format("memory estimate: {:.1f} MiB\n", sim.memory_bytes() / 1048576.0);
-    std::cout << fmt::format("sph: kernel {}, h = {:.4g} m, c0 = {:.4g} m/s\n", spec.sph.kernel,
-                             spec.sph.h, spec.sph.c0);
-    std::cout << fmt::format("initial dt: {:.4g} s, limited by {}; about {:.0f} steps to the "
-                             "end time\n",
-                             dt.dt, dt.limiter, spec.t_end / dt.dt);
+    Real dt = std::numeric_limits<Real>::max();
+    std::string limiter;
+    if (sim.has_fluid()) {
+        const auto d = sim.solver().initial_dt();
+        std::cout << fmt::format("sph: dp = {} m, kernel {}, h = {:.4g} m, c0 = {:.4g} m/s; "
+                                 "initial dt {:.4g} s ({})\n",
+                                 spec.dp, spec.sph.kernel, spec.sph.h, spec.sph.c0, d.dt,
+                                 d.limiter);
+        dt = d.dt, limiter = "sph/" + d.limiter;
+    }
+    if (sim.has_grains()) {
+        const auto& d = sim.grains();
+        std::cout << fmt::format("dem: {} grains, {:.4g} kg, {} materials, {} walls; dt {:.4g} s "
+                                 "({}), automatic {:.4g} s ({}), largest accepted {:.4g} s{}\n",
+                                 grains, d.grains().total_mass(), spec.dem.materials.size(),
+                                 d.walls().walls().size(), d.dt(),
+                                 spec.dem.params.dt > 0 ? "user" : "automatic",
+                                 d.automatic_dt().dt, d.automatic_dt().limiter,
+                                 d.stability_dt().dt,
+                                 spec.dem.params.subcycle ? ", sub-cycled" : "");
+        if (!spec.dem.params.subcycle && d.dt() < dt) dt = d.dt(), limiter = "dem";
+    }
+    std::cout << fmt::format("time step: {:.4g} s ({}); about {:.0f} steps to the end time\n", dt,
+                             limiter, spec.t_end / dt);
     return 0;
 }
 
