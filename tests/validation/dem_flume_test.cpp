@@ -15,7 +15,8 @@ using namespace debrisflow;
 // the opposite sense); the peak exceeds it. Also: the section probe sees a
 // supercritical flow (Fr > 1) and every grain passes the section.
 TEST(DemFlume, ReducedBarrierImpactHasPeakAndStaticLoad) {
-    io::CaseSpec spec = io::read_case(DEBRISFLOW_SOURCE_DIR "/cases/flume/flume30_reduced.toml", {});
+    io::CaseSpec spec =
+        io::read_case(DEBRISFLOW_SOURCE_DIR "/cases/flume/flume30_reduced.toml", {});
     app::Simulation sim(std::move(spec));
     app::RunOptions opt;
     opt.quiet = true;

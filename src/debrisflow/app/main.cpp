@@ -40,9 +40,8 @@ int check(const std::string& file, const std::vector<std::string>& sets) {
                                  "({}), automatic {:.4g} s ({}), largest accepted {:.4g} s{}\n",
                                  grains, d.grains().total_mass(), spec.dem.materials.size(),
                                  d.walls().walls().size(), d.dt(),
-                                 spec.dem.params.dt > 0 ? "user" : "automatic",
-                                 d.automatic_dt().dt, d.automatic_dt().limiter,
-                                 d.stability_dt().dt,
+                                 spec.dem.params.dt > 0 ? "user" : "automatic", d.automatic_dt().dt,
+                                 d.automatic_dt().limiter, d.stability_dt().dt,
                                  spec.dem.params.subcycle ? ", sub-cycled" : "");
         if (!spec.dem.params.subcycle && d.dt() < dt) dt = d.dt(), limiter = "dem";
     }

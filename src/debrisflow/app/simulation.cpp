@@ -40,8 +40,9 @@ probes::Probe& Simulation::probe(const std::string& name) {
 
 std::size_t Simulation::memory_bytes() const {
     // Grains: 19 Real + material + id, and about 12 contact slots (index, key, 6-Real history).
-    const std::size_t grains = std::size_t(grains_.size()) *
-                               (19 * sizeof(Real) + 5 + 12 * (8 + 6 * sizeof(Real)) + 6 * sizeof(Real));
+    const std::size_t grains =
+        std::size_t(grains_.size()) *
+        (19 * sizeof(Real) + 5 + 12 * (8 + 6 * sizeof(Real)) + 6 * sizeof(Real));
     if (!solver_) return grains;
     const std::size_t n = std::size_t(set_.size());
     // Particle fields (21 Real + kind + group + id), doubled while reordering; integrator
@@ -51,8 +52,8 @@ std::size_t Simulation::memory_bytes() const {
     const double neighbours =
         spec_.dim == 3 ? 4.0 / 3.0 * pi * reach * reach * reach : pi * reach * reach;
     const std::size_t list = std::size_t(0.5 * neighbours * 1.25) * sizeof(Index);
-    return grains + n * (2 * (21 * sizeof(Real) + 1 + 2 + 8) + 7 * sizeof(Real) + 3 * sizeof(Index) + list +
-                4 * sizeof(Real) * 2);
+    return grains + n * (2 * (21 * sizeof(Real) + 1 + 2 + 8) + 7 * sizeof(Real) +
+                         3 * sizeof(Index) + list + 4 * sizeof(Real) * 2);
 }
 
 void Simulation::settle_grains() {
@@ -91,8 +92,8 @@ io::RunReport Simulation::run(const RunOptions& opt) {
     report.grains = grains_.size();
     if (solver_) report.initial_dt = solver_->initial_dt();
     if (dem_) {
-        report.dem_dt = {dem_->dt(), spec_.dem.params.dt > 0 ? "user dt"
-                                                             : dem_->automatic_dt().limiter};
+        report.dem_dt = {dem_->dt(),
+                         spec_.dem.params.dt > 0 ? "user dt" : dem_->automatic_dt().limiter};
         if (!solver_) report.initial_dt = report.dem_dt;
     }
     const bool files = !opt.out_dir.empty();
@@ -107,8 +108,8 @@ io::RunReport Simulation::run(const RunOptions& opt) {
         if (spec_.vtk && dem_)
             vtk_grains = std::make_unique<io::VtkSeries>(opt.out_dir + "/vtk", "grains");
     }
-    log_.line(fmt::format("debrisflow: case '{}' ({}), {}D, end time {} s", spec_.name,
-                          spec_.file, spec_.dim, spec_.t_end));
+    log_.line(fmt::format("debrisflow: case '{}' ({}), {}D, end time {} s", spec_.name, spec_.file,
+                          spec_.dim, spec_.t_end));
     log_.line(fmt::format("particles: {} fluid, {} boundary, {} grains; threads: {}", report.fluid,
                           report.boundary, report.grains, report.threads));
     if (solver_)
@@ -160,14 +161,15 @@ io::RunReport Simulation::run(const RunOptions& opt) {
     }
     for (auto& p : probes_) {
         probes::Probe* raw = p.get();
-        integ.add_observer(time::Schedule::every_time(p->every()),
-                           [this, raw](const time::StepInfo& s) {
-                               raw->record(s.t, probe_context());
-                           });
+        integ.add_observer(
+            time::Schedule::every_time(p->every()),
+            [this, raw](const time::StepInfo& s) { raw->record(s.t, probe_context()); });
     }
     const auto frames = spec_.vtk_every > 0 ? time::Schedule::every_time(spec_.vtk_every)
                                             : time::Schedule::every_steps(0);
-    if (vtk) integ.add_observer(frames, [this, &vtk](const time::StepInfo& s) { vtk->write(set_, s.t); });
+    if (vtk)
+        integ.add_observer(frames,
+                           [this, &vtk](const time::StepInfo& s) { vtk->write(set_, s.t); });
     if (vtk_grains)
         integ.add_observer(frames, [this, &vtk_grains](const time::StepInfo& s) {
             vtk_grains->write(grains_, s.t);

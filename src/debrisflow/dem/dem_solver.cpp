@@ -2,6 +2,7 @@
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/core/stopwatch.hpp"
 #include "debrisflow/dem/grain_contact_k.hpp"
+#include "debrisflow/exec/parallel.hpp"
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -79,9 +80,8 @@ time::DtLimit DemSolver::compute_automatic_dt(Real safety) const {
                 // Hertz contact time 2.868 (m*^2 / (E*^2 R* v))^(1/5) (Johnson 1985).
                 const Real tc =
                     2.868 * std::pow(meff * meff / (p.e_star * p.e_star * reff * vref), Real(0.2));
-                consider(safety * tc,
-                         fmt::format("{} x Hertz contact time at {:.3g} m/s ({})", safety,
-                                     vref, pair));
+                consider(safety * tc, fmt::format("{} x Hertz contact time at {:.3g} m/s ({})",
+                                                  safety, vref, pair));
                 // Rayleigh time pi r sqrt(rho/G) / (0.1631 nu + 0.8766) of the grain material.
                 if (!ma.rigid && ma.youngs_modulus > 0) {
                     const Real g = ma.youngs_modulus / (2 * (1 + ma.poisson));
@@ -127,6 +127,7 @@ void DemSolver::rebuild() {
         grid_.build(grains_.x.data(), grains_.y.data(), grains_.z.data(), n);
     }
     const GrainView g = grains_.view();
+    refresh_hot();
     const neighbors::GridView grid = grid_.view();
     const Real skin = skin_;
     grain_slots_.build(n, [&](Index i, auto&& emit) {
@@ -184,6 +185,7 @@ void DemSolver::kick_drift(Real h) {
     const Real half = Real(0.5) * h;
     const bool plane = params_.dim == 2;
     const sph::Domain dom = domain_;
+    GrainState* hot = hot_.data();
     Real vmax2 = 0;
     int bad = 0;
 #pragma omp parallel for schedule(static) reduction(max : vmax2) reduction(+ : bad) if (g.n > parallel_min)
@@ -211,6 +213,10 @@ void DemSolver::kick_drift(Real h) {
             }
             *pos[d] = x;
         }
+        GrainState& hs = hot[i];
+        hs.x = {*pos[0], *pos[1], *pos[2]};
+        hs.v = {g.vx[i], g.vy[i], g.vz[i]};
+        hs.w = {g.wx[i], g.wy[i], g.wz[i]};
         const Real v2 = vel[0] * vel[0] + vel[1] * vel[1] + vel[2] * vel[2];
         vmax2 = std::max(vmax2, v2);
     }
@@ -232,6 +238,7 @@ void DemSolver::forces(Real half_kick) {
     long touching = 0;
     Real fsum = 0;
     const Real h_contact = current_h_;
+    const GrainState* hot = hot_.data();
 #pragma omp parallel reduction(+ : touching, fsum) if (n > parallel_min)
     {
         Real* b = buffers_[std::size_t(omp_get_thread_num())].data();
@@ -239,18 +246,18 @@ void DemSolver::forces(Real half_kick) {
 #pragma omp for schedule(static, 64)
         for (Index i = 0; i < n; ++i) {
             const std::size_t base = std::size_t(i) * std::size_t(gcap);
-            const GrainState si = GrainState::load(g, i);
+            const GrainState si = hot[i];
             Vec3 fi{}, ti{};
             for (Index k = 0; k < grain_slots_.count(i); ++k) {
                 const Index j = gp[base + std::size_t(k)];
                 ContactHistory& h = gh[base + std::size_t(k)];
-                const Vec3 r = grid.separation(si.x, g.pos(j));
-                const Real rs = si.r + g.radius[j], d2 = dot(r, r);
+                const GrainState& sj = hot[j];
+                const Vec3 r = grid.separation(si.x, sj.x);
+                const Real rs = si.r + sj.r, d2 = dot(r, r);
                 if (d2 >= rs * rs) {
                     h = ContactHistory{};
                     continue;
                 }
-                const GrainState sj = GrainState::load(g, j);
                 const GrainPairForce c =
                     grain_pair_force(table(si.material, sj.material), si, sj, r, d2, h_contact, h);
                 fi += c.force_i;
@@ -300,7 +307,7 @@ void DemSolver::forces(Real half_kick) {
             const std::size_t base = std::size_t(i) * std::size_t(wcap);
             const Index cw = wall_slots_.count(i);
             if (cw > 0) {
-                const GrainState si = GrainState::load(g, i);
+                const GrainState si = hot[i];
                 WallCandidates cand;
                 for (Index k = 0; k < cw; ++k) {
                     const Index pidx = wp[base + std::size_t(k)];
@@ -395,11 +402,21 @@ void DemSolver::remove_wall(int wall) {
 void DemSolver::stop_grains() {
     for (auto* v : {&grains_.vx, &grains_.vy, &grains_.vz, &grains_.wx, &grains_.wy, &grains_.wz})
         std::fill(v->begin(), v->end(), Real(0));
+    refresh_hot();
+}
+
+void DemSolver::refresh_hot() {
+    const GrainView g = grains_.view();
+    hot_.resize(std::size_t(g.n));
+    GrainState* hot = hot_.data();
+    exec::for_each(g.n, [=](Index i) { hot[i] = GrainState::load(g, i); });
 }
 
 Real DemSolver::unbalanced_ratio() const {
     const Index n = grains_.size();
-    if (n == 0 || contacts_ == 0) return std::numeric_limits<Real>::max();
+    // A packing is only judged once it is one (on average a contact per grain): early on a
+    // few hard collisions among falling grains would make the ratio small.
+    if (n == 0 || 2 * contacts_ < long(n)) return std::numeric_limits<Real>::max();
     Real sum = 0;
     for (Index i = 0; i < n; ++i)
         sum += std::hypot(grains_.fx[std::size_t(i)], grains_.fy[std::size_t(i)],

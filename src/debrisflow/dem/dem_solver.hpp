@@ -1,6 +1,7 @@
 #pragma once
 #include "debrisflow/dem/contact_slots.hpp"
 #include "debrisflow/dem/dem_params.hpp"
+#include "debrisflow/dem/grain_contact_k.hpp"
 #include "debrisflow/dem/grain_set.hpp"
 #include "debrisflow/dem/materials.hpp"
 #include "debrisflow/dem/wall_set.hpp"
@@ -41,6 +42,9 @@ public:
     time::DtLimit stability_dt() const { return stability_dt_; }
     Real dt() const { return dt_; }
     Real time() const { return t_; }
+    // Rebuilds neighbour lists now (reordering grains by cell when params.reorder), keeping
+    // the contact history; normally triggered by the accumulated drift.
+    void rebuild_now() { rebuild(); }
     // Removes a wall (a gate opening): its contacts end at the next step.
     void remove_wall(int wall);
     // Sets every grain's velocity and spin to zero (end of settling).
@@ -49,7 +53,8 @@ public:
     // Contacts in the last force evaluation and the mean contact force magnitude [N].
     long contacts() const { return contacts_; }
     Real mean_contact_force() const { return contacts_ > 0 ? sum_contact_force_ / contacts_ : 0; }
-    // PFC's equilibrium ratio: mean unbalanced force / mean contact force.
+    // PFC's equilibrium ratio: mean unbalanced force / mean contact force (infinite while
+    // there are fewer contacts than half the grains).
     Real unbalanced_ratio() const;
     long list_builds() const { return builds_; }
 
@@ -64,6 +69,8 @@ public:
 private:
     void rebuild();
     void configure_grid();
+    // Copies positions, velocities, spins, radii, masses and materials into hot_.
+    void refresh_hot();
     void kick_drift(Real h);
     void forces(Real half_kick);
     time::DtLimit compute_automatic_dt(Real safety) const;
@@ -77,6 +84,9 @@ private:
     neighbors::CellGrid grid_;
     ContactSlots grain_slots_, wall_slots_;
     std::vector<std::vector<Real>> buffers_;
+    // Interleaved copy of the state the contact loop reads (one 96-byte record per grain
+    // instead of twelve arrays), written by the drift; the GrainSet stays the master copy.
+    std::vector<GrainState> hot_;
     Real max_radius_ = 0, skin_ = 0, drift_ = 0, t_ = 0, dt_ = 0;
     Real current_h_ = 0; // size of the step being taken (tangential spring increment)
     time::DtLimit auto_dt_{0, ""}, stability_dt_{0, ""};

@@ -114,8 +114,8 @@ ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
     p.type = t.choice("type", {"pressure", "gauge", "velocity", "front", "wall_force", "section",
                                "kinetic_energy", "runup", "mass_flux"});
     p.every = t.positive("every", 0.001);
-    const bool fluid_probe = p.type == "pressure" || p.type == "velocity" || p.type == "gauge" ||
-                             p.type == "front";
+    const bool fluid_probe =
+        p.type == "pressure" || p.type == "velocity" || p.type == "gauge" || p.type == "front";
     if (fluid_probe && c.fluids.empty()) t.fail("type", "a " + p.type + " probe needs a fluid");
     const bool grain_probe = p.type == "section" || p.type == "kinetic_energy" ||
                              p.type == "runup" || p.type == "mass_flux";
@@ -258,9 +258,9 @@ CaseSpec read_case(const std::string& path, const std::vector<std::string>& over
         if (c.has_dem) {
             w.material = t.string("material", "");
             const auto& mats = c.dem.materials;
-            if (!w.material.empty() &&
-                std::none_of(mats.begin(), mats.end(),
-                             [&](const auto& m) { return m.name == w.material; }))
+            if (!w.material.empty() && std::none_of(mats.begin(), mats.end(), [&](const auto& m) {
+                    return m.name == w.material;
+                }))
                 t.fail("material", "no [[material]] named \"" + w.material + "\"");
             w.velocity = t.vec3("velocity", c.dim, {});
         }

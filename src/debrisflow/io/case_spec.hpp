@@ -69,10 +69,10 @@ struct DemSpec {
     dem::DemParams params;
     std::vector<dem::Material> materials;
     std::vector<dem::PairOverride> overrides;
-    Real thickness = 0;           // 2D: disc thickness [m] (mass of a disc, as PFC2D)
-    bool settle = false;          // settle under gravity before t = 0
-    Real settle_ratio = 0.01;     // stop when mean unbalanced / mean contact force < this
-    Real settle_max_time = 2;     // [s] of settling before giving up
+    Real thickness = 0;       // 2D: disc thickness [m] (mass of a disc, as PFC2D)
+    bool settle = false;      // settle under gravity before t = 0
+    Real settle_ratio = 0.01; // stop when mean unbalanced / mean contact force < this
+    Real settle_max_time = 2; // [s] of settling before giving up
     std::vector<GrainsSpec> grains;
 };
 
@@ -84,9 +84,9 @@ struct ProbeSpec {
     std::string wall;
     int axis = 0;
     Real every = 0;
-    Vec3 normal;        // wall_force: direction of the normal component; mass_flux: plane normal
-    Vec3 min, max;      // kinetic_energy: box; section: window
-    Real bed = 0;       // section, runup: bed elevation z [m]
+    Vec3 normal;   // wall_force: direction of the normal component; mass_flux: plane normal
+    Vec3 min, max; // kinetic_energy: box; section: window
+    Real bed = 0;  // section, runup: bed elevation z [m]
 };
 
 struct CaseSpec {

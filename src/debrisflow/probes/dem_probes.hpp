@@ -12,8 +12,7 @@ class SectionProbe : public Probe {
 public:
     SectionProbe(const io::ProbeSpec& s, const io::CaseSpec& c);
     std::vector<std::string> columns() const override {
-        return {"h [m]",   "v [m/s]",          "rho_bulk [kg/m3]",
-                "Fr [-]",  "N_savage [-]",     "grains [-]"};
+        return {"h [m]", "v [m/s]", "rho_bulk [kg/m3]", "Fr [-]", "N_savage [-]", "grains [-]"};
     }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
 
@@ -41,7 +40,8 @@ private:
 // wall (within 5 % of their radius of it); the summary's peak is the maximum run-up.
 class RunupProbe : public Probe {
 public:
-    RunupProbe(const io::ProbeSpec& s, int wall) : Probe(s.name, s.every), wall_(wall), bed_(s.bed) {}
+    RunupProbe(const io::ProbeSpec& s, int wall)
+        : Probe(s.name, s.every), wall_(wall), bed_(s.bed) {}
     std::vector<std::string> columns() const override { return {"runup [m]"}; }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
 
@@ -57,9 +57,7 @@ class MassFluxProbe : public Probe {
 public:
     explicit MassFluxProbe(const io::ProbeSpec& s)
         : Probe(s.name, s.every), point_(s.position), normal_(s.normal) {}
-    std::vector<std::string> columns() const override {
-        return {"flux [kg/s]", "cumulative [kg]"};
-    }
+    std::vector<std::string> columns() const override { return {"flux [kg/s]", "cumulative [kg]"}; }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
 
 private:

@@ -74,7 +74,8 @@ struct Region {
     std::unique_ptr<TriangleMesh> mesh;
     Region(const io::ShapeSpec& shape, int d) : s(shape), dim(d) {
         if (s.type == "stl")
-            mesh = std::make_unique<TriangleMesh>(TriangleMesh::read_stl(s.file, s.scale, s.offset));
+            mesh =
+                std::make_unique<TriangleMesh>(TriangleMesh::read_stl(s.file, s.scale, s.offset));
     }
     void bounds(Vec3& lo, Vec3& hi) const {
         if (s.type == "box") {
@@ -119,7 +120,8 @@ void insert_random(const io::CaseSpec& c, const io::GrainsSpec& b, int mat, dem:
     region.bounds(lo, hi);
     const Real cell = b.size.max;
     auto key = [&](Vec3 p) {
-        const long i = long(std::floor((p.x - lo.x) / cell)), j = long(std::floor((p.y - lo.y) / cell)),
+        const long i = long(std::floor((p.x - lo.x) / cell)),
+                   j = long(std::floor((p.y - lo.y) / cell)),
                    k = long(std::floor((p.z - lo.z) / cell));
         return (i * 73856093L) ^ (j * 19349663L) ^ (k * 83492791L);
     };
@@ -139,7 +141,8 @@ void insert_random(const io::CaseSpec& c, const io::GrainsSpec& b, int mat, dem:
         for (int dz = -1; ok && dz <= 1; ++dz)
             for (int dy = -1; ok && dy <= 1; ++dy)
                 for (int dx = -1; ok && dx <= 1; ++dx) {
-                    const auto range = placed.equal_range(key(p + Vec3{dx * cell, dy * cell, dz * cell}));
+                    const auto range =
+                        placed.equal_range(key(p + Vec3{dx * cell, dy * cell, dz * cell}));
                     for (auto it = range.first; ok && it != range.second; ++it) {
                         const Vec3 s = p - it->second.first;
                         const Real reach = r + it->second.second;
@@ -229,7 +232,8 @@ void build_grains(const io::CaseSpec& c, dem::GrainSet& g) {
         for (Index i = before; i < g.size(); ++i)
             for (int d = 0; d < 3; ++d) {
                 if (c.dim == 2 && d == 1) continue;
-                const Real x = d == 0 ? g.x[std::size_t(i)] : (d == 1 ? g.y[std::size_t(i)] : g.z[std::size_t(i)]);
+                const Real x = d == 0 ? g.x[std::size_t(i)]
+                                      : (d == 1 ? g.y[std::size_t(i)] : g.z[std::size_t(i)]);
                 if (!(x >= c.domain.lo[d] && x <= c.domain.hi[d]))
                     throw InputError(fmt::format("{}: grains '{}' extend outside the domain in {}",
                                                  c.file, b.name, "xyz"[d]));
