@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # DEM throughput: debrisflow at 1 and 2 threads and LIGGGHTS 3.8 (Debian package liggghts) on
-# one core, same physics (cases/bench/box100k.toml = bench/liggghts/box100k.in).
+# one core, same physics (cases/bench/<case>.toml = bench/liggghts/<case>.in).
 # Usage: bench/run_dem_bench.sh [build dir] [steps]   (defaults: build, 5000)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -18,7 +18,12 @@ print(f\"debrisflow $case threads=$t: {s['particle_steps_per_second']:.3g} parti
   done
 done
 if command -v liggghts > /dev/null; then
-  (cd "$out" && sed "s/^run 5000/run $steps/" "$root/bench/liggghts/box100k.in" > box100k.in &&
-     liggghts -in box100k.in -echo none -log lig.log | grep "Loop time" |
-     awk -v s="$steps" '{printf "liggghts box100k 1 core: %.3g particle-steps/s (%s s)\n", 100000*s/$4, $4}')
+  for case in box100k:100000 flume30:15000; do
+    name=${case%%:*}
+    n=${case##*:}
+    (cd "$out" && sed "s/^run 5000/run $steps/" "$root/bench/liggghts/$name.in" > "$name.in" &&
+       liggghts -in "$name.in" -echo none -log "lig-$name.log" | grep "Loop time" |
+       awk -v s="$steps" -v n="$n" -v c="$name" \
+         '{printf "liggghts %s 1 core: %.3g particle-steps/s (%s s)\n", c, n*s/$4, $4}')
+  done
 fi

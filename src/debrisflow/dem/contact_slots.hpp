@@ -23,6 +23,7 @@ public:
     Index capacity() const { return cap_; }
     Index count(Index i) const { return count_[std::size_t(i)]; }
     const Index* partners() const { return partner_.data(); }
+    const Index* counts() const { return count_.data(); }
     ContactHistory* history() { return hist_.data(); }
     std::size_t slots() const;
 

@@ -234,6 +234,7 @@ void DemSolver::forces(Real half_kick) {
     for (auto& b : buffers_) b.resize(6 * std::size_t(n));
     const Index gcap = grain_slots_.capacity();
     const Index* gp = grain_slots_.partners();
+    const Index* gcount = grain_slots_.counts();
     ContactHistory* gh = grain_slots_.history();
     long touching = 0;
     Real fsum = 0;
@@ -248,7 +249,8 @@ void DemSolver::forces(Real half_kick) {
             const std::size_t base = std::size_t(i) * std::size_t(gcap);
             const GrainState si = hot[i];
             Vec3 fi{}, ti{};
-            for (Index k = 0; k < grain_slots_.count(i); ++k) {
+            const Index ci = gcount[i];
+            for (Index k = 0; k < ci; ++k) {
                 const Index j = gp[base + std::size_t(k)];
                 ContactHistory& h = gh[base + std::size_t(k)];
                 const GrainState& sj = hot[j];
@@ -289,6 +291,11 @@ void DemSolver::forces(Real half_kick) {
     std::vector<Real> wall_sum(6 * nw, 0);
     const Index wcap = wall_slots_.capacity();
     const Index* wp = wall_slots_.partners();
+    const Index* wcount = wall_slots_.counts();
+    const int nbuf = int(buffers_.size());
+    std::vector<const Real*> buf_ptrs;
+    for (const auto& b : buffers_) buf_ptrs.push_back(b.data());
+    const Real* const* bufs = buf_ptrs.data();
     ContactHistory* wh = wall_slots_.history();
     const Vec3 grav = params_.gravity;
     const bool plane = params_.dim == 2;
@@ -299,13 +306,13 @@ void DemSolver::forces(Real half_kick) {
 #pragma omp for schedule(static)
         for (Index i = 0; i < n; ++i) {
             Vec3 f = g.mass[i] * grav, t{};
-            for (const auto& buf : buffers_) {
-                const Real* bi = buf.data() + 6 * std::size_t(i);
+            for (int b = 0; b < nbuf; ++b) {
+                const Real* bi = bufs[b] + 6 * std::size_t(i);
                 f += Vec3{bi[0], bi[1], bi[2]};
                 t += Vec3{bi[3], bi[4], bi[5]};
             }
             const std::size_t base = std::size_t(i) * std::size_t(wcap);
-            const Index cw = wall_slots_.count(i);
+            const Index cw = wcount[i];
             if (cw > 0) {
                 const GrainState si = hot[i];
                 WallCandidates cand;
