@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <gtest/gtest.h>
 
 using namespace debrisflow;
@@ -253,4 +254,58 @@ diameter = 0.01
 region = { shape = "box", min = [0, 0, 0], max = [0.1, 0.1, 0.1] }
 )"));
     EXPECT_NE(full.find("no room"), std::string::npos) << full;
+}
+
+// An STL floor made of a fan of eight triangles around a vertex: a sphere resting exactly on
+// the shared vertex, and one on a shared edge, each load the floor with their own weight only.
+TEST(DemGrains, StlWallSharedVertexAndEdgeCountedOnce) {
+    const auto dir = std::filesystem::temp_directory_path() / "debrisflow_tests";
+    std::filesystem::create_directories(dir);
+    const auto stl = (dir / "fan.stl").string();
+    {
+        std::ofstream out(stl);
+        out << "solid fan\n";
+        const double c = 0.05, pi = 3.14159265358979;
+        for (int k = 0; k < 8; ++k) {
+            const double a0 = k * pi / 4, a1 = (k + 1) * pi / 4, R = 0.07;
+            out << "facet normal 0 0 1\n outer loop\n";
+            out << "  vertex " << c << " " << c << " 0\n";
+            out << "  vertex " << c + R * std::cos(a0) << " " << c + R * std::sin(a0) << " 0\n";
+            out << "  vertex " << c + R * std::cos(a1) << " " << c + R * std::sin(a1) << " 0\n";
+            out << " endloop\nendfacet\n";
+        }
+        out << "endsolid fan\n";
+    }
+    for (const char* pos : {"[0.05, 0.05, 0.005]", "[0.08, 0.05, 0.005]"}) {
+        app::Simulation sim(test::case_from_toml("dem_stl", std::string(R"(dimensions = 3
+[time]
+end = 0.02
+[output]
+vtk = false
+[domain]
+min = [-0.05, -0.05, -0.05]
+max = [0.15, 0.15, 0.15]
+[[material]]
+name = "glass"
+density = 2500
+kn = 1e5
+restitution = 0.5
+friction = 0.5
+[[grains]]
+name = "one"
+material = "glass"
+packing = "single"
+diameter = 0.01
+position = )") + pos + R"(
+[[wall]]
+name = "fan"
+shape = "stl"
+file = ")" + stl + R"("
+)"));
+        app::RunOptions opt;
+        opt.quiet = true;
+        sim.run(opt);
+        const Real weight = sim.grains().grains().total_mass() * 9.81;
+        EXPECT_NEAR(-sim.grains().walls().walls()[0].force.z / weight, 1, 0.02) << pos;
+    }
 }

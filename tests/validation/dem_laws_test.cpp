@@ -1,0 +1,94 @@
+// Closed-form checks of the DCDEM normal law and of rolling resistance.
+#include "dem_rig.hpp"
+#include <cmath>
+#include <cstdio>
+#include <gtest/gtest.h>
+
+using namespace debrisflow;
+using test::DemRig;
+
+namespace {
+
+// Normal impact of a sphere on a rigid plane at v; returns the rebound speed / v.
+Real rebound_ratio(const dem::Material& m, Real r, Real v) {
+    dem::Material rigid = m;
+    rigid.name = "rigid";
+    rigid.rigid = true;
+    DemRig rig;
+    rig.add_sphere({0, 0, r * 1.001}, {0, 0, -v}, r, m.density, 0);
+    rig.add_plane("floor", {0, 0, 0}, {0, 0, 1}, 1);
+    dem::DemParams p;
+    p.gravity = {0, 0, 0};
+    p.safety = 0.001;
+    rig.start(p, {m, rigid}, {-1, -1, -1}, {1, 1, 1});
+    bool touched = false;
+    for (long s = 0; s < 1000000; ++s) {
+        rig.solver->advance(rig.solver->dt());
+        const bool touching = rig.grains.z[0] < r;
+        touched = touched || touching;
+        if (touched && !touching) break;
+    }
+    return rig.grains.vz[0] / v;
+}
+
+} // namespace
+
+// DCDEM (Canelas et al. 2017, Lemieux et al. 2008): F = k_n d^1.5 - g_n d^0.25 v_n with
+// k_n = 4/3 E* sqrt(R*), g_n = C_n sqrt(6 m* E* sqrt(R*)) is Tsuji's oscillator with
+// alpha = g_n / sqrt(m* k_n) = C_n sqrt(4.5), so its restitution is velocity-independent and
+// equals tsuji_restitution(C_n sqrt(4.5)). Tolerance 0.5 % (time integration at t_c/1000).
+TEST(DemLaws, DcdemRestitutionFollowsFromCn) {
+    dem::Material m;
+    m.name = "rock";
+    m.law = "dcdem";
+    m.density = 2650;
+    m.youngs_modulus = 4.5e10; // the slit-check-dam paper's sediment: E 45 GPa, nu 0.35
+    m.poisson = 0.35;
+    m.friction = 0.35;
+    for (Real cn : {1e-5, 0.05, 0.2}) {
+        m.damping_cn = cn;
+        const Real expected = dem::tsuji_restitution(cn * std::sqrt(4.5));
+        for (Real v : {0.5, 3.0}) {
+            const Real e = rebound_ratio(m, 0.01, v);
+            EXPECT_NEAR(e / expected, 1, 0.005) << "C_n " << cn << " v " << v;
+            std::printf("dcdem C_n %.0e v %.1f m/s: e = %.4f (expected %.4f)\n", cn, v, e,
+                        expected);
+        }
+    }
+}
+
+// Constant-torque rolling resistance M = mu_r R* F_n (Zhou et al. 1999): a solid sphere
+// rolling on a level plane decelerates at a = 5/7 mu_r g (from m a = -F, I w' = F r - M with
+// rolling without slip). Tolerance 0.5 %.
+TEST(DemLaws, ConstantTorqueRollingDecelerates) {
+    dem::Material m;
+    m.name = "glass";
+    m.density = 2500;
+    m.kn = m.kt = 1e5;
+    m.restitution = 0.3;
+    m.friction = 0.5;
+    m.rolling_friction = 0.1;
+    const Real r = 0.01, v0 = 1.0, g = 9.81;
+    DemRig rig;
+    const Real mass = DemRig::sphere_mass(m.density, r);
+    const Real sink = mass * g / m.kn; // start at the static overlap
+    rig.add_sphere({0, 0, r - sink}, {v0, 0, 0}, r, m.density, 0);
+    rig.grains.set_spin(0, {0, v0 / r, 0});
+    rig.add_plane("floor", {0, 0, 0}, {0, 0, 1}, -1);
+    dem::DemParams p;
+    p.rolling = "constant_torque";
+    rig.start(p, {m}, {-1, -1, -1}, {10, 1, 1});
+    Real st = 0, sv = 0, stt = 0, stv = 0, t = 0;
+    int n = 0;
+    while (t < 0.5) {
+        rig.solver->advance(rig.solver->dt());
+        t += rig.solver->dt();
+        if (t < 0.05) continue;
+        const Real v = rig.grains.vx[0];
+        st += t, sv += v, stt += t * t, stv += t * v;
+        ++n;
+    }
+    const Real a = (n * stv - st * sv) / (n * stt - st * st), expected = -5.0 / 7.0 * 0.1 * g;
+    std::printf("constant-torque rolling: a = %.5f m/s2 (expected %.5f)\n", a, expected);
+    EXPECT_NEAR(a / expected, 1, 0.005);
+}
