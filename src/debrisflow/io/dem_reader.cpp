@@ -7,7 +7,7 @@ namespace debrisflow::io {
 
 namespace {
 
-dem::Material read_material(const ConfigTable& t, const CaseSpec& c) {
+dem::Material read_material(const ConfigTable& t) {
     dem::Material m;
     m.name = t.string("name");
     m.law = t.choice("law", dem::ContactLawRegistry::names(), "linear");
@@ -31,7 +31,6 @@ dem::Material read_material(const ConfigTable& t, const CaseSpec& c) {
     m.damping_cn = t.real("damping_cn", 1e-5);
     if (m.damping_cn < 0) t.fail("damping_cn", "must be >= 0");
     t.finish();
-    (void)c;
     return m;
 }
 
@@ -145,7 +144,7 @@ GrainsSpec read_grains(const ConfigTable& t, const CaseSpec& c) {
 
 void read_dem(const ConfigTable& root, CaseSpec& c) {
     for (const auto& t : root.tables("material")) {
-        c.dem.materials.push_back(read_material(t, c));
+        c.dem.materials.push_back(read_material(t));
         for (std::size_t i = 0; i + 1 < c.dem.materials.size(); ++i)
             if (c.dem.materials[i].name == c.dem.materials.back().name)
                 t.fail("name", "two materials are named \"" + c.dem.materials[i].name + "\"");

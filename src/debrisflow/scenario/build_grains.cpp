@@ -128,7 +128,6 @@ void insert_random(const io::CaseSpec& c, const io::GrainsSpec& b, int mat, dem:
     std::unordered_multimap<long, std::pair<Vec3, Real>> placed;
     std::uniform_real_distribution<Real> u(0, 1);
     auto& rng = sizes.rng();
-    const Real rho = c.dem.materials[std::size_t(mat)].density;
     Real mass = 0;
     long count = 0, failures = 0;
     const long max_failures = 20000;
@@ -165,7 +164,6 @@ void insert_random(const io::CaseSpec& c, const io::GrainsSpec& b, int mat, dem:
         ++count;
         d = sizes();
     }
-    (void)rho;
 }
 
 void fill_lattice(const io::CaseSpec& c, const io::GrainsSpec& b, int mat, dem::GrainSet& g) {
