@@ -6,7 +6,7 @@ namespace debrisflow::probes {
 
 WallForceProbe::WallForceProbe(const io::ProbeSpec& s, int wall, const io::CaseSpec& c)
     : Probe(s.name, s.every), wall_(wall), normal_(s.normal),
-      unit_(c.dim == 2 && !c.fluids.empty() ? "N/m" : "N") {}
+      unit_(c.dim == 2 && !c.fluids.empty() ? "N/m" : "N"), grains_(c.has_dem) {}
 
 std::vector<std::string> WallForceProbe::columns() const {
     std::vector<std::string> c{"Fx [" + unit_ + "]", "Fy [" + unit_ + "]", "Fz [" + unit_ + "]",
@@ -14,6 +14,11 @@ std::vector<std::string> WallForceProbe::columns() const {
     if (norm(normal_) > 0) {
         c.push_back("Fn [" + unit_ + "]");
         c.push_back("Fn_avg [" + unit_ + "]");
+    }
+    if (grains_) {
+        c.push_back("Mx_grains [N m]");
+        c.push_back("My_grains [N m]");
+        c.push_back("Mz_grains [N m]");
     }
     return c;
 }
@@ -35,6 +40,10 @@ std::vector<Real> WallForceProbe::sample(Real, const ProbeContext& ctx) {
     if (norm(normal_) > 0) {
         out.push_back(dot(f, normal_));
         out.push_back(dot(avg, normal_));
+    }
+    if (ctx.dem) {
+        const Vec3 m = ctx.dem->walls().walls()[std::size_t(wall_)].moment;
+        out.insert(out.end(), {m.x, m.y, m.z});
     }
     return out;
 }

@@ -8,6 +8,8 @@ namespace debrisflow::probes {
 // normal component, instantaneous (the last step) and averaged over the sampling interval
 // (grain impulse / interval; the instantaneous value of a stiff contact network fluctuates
 // at the contact frequency, the averaged one is what a load cell of that bandwidth reads).
+// With grains, also the grains' moment on the wall about its origin (plane point, box or mesh
+// centre).
 class WallForceProbe : public Probe {
 public:
     WallForceProbe(const io::ProbeSpec& s, int wall, const io::CaseSpec& c);
@@ -18,6 +20,7 @@ private:
     int wall_;
     Vec3 normal_;
     std::string unit_;
+    bool grains_;
 };
 
 } // namespace debrisflow::probes
