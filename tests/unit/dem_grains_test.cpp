@@ -69,7 +69,7 @@ region = { shape = "box", min = [0, 0, 0], max = [0.1, 0.1, 0.25] }
     for (Index i = 0; i < g.size(); ++i)
         for (Index j = i + 1; j < g.size(); ++j) {
             const std::size_t a = std::size_t(i), b = std::size_t(j);
-            const Real dx = g.x[a] - g.x[b], dy = g.y[a] - g.y[b], dz = g.z[a] - g.z[b];
+            const Real dx = g.pos[a].x - g.pos[b].x, dy = g.pos[a].y - g.pos[b].y, dz = g.pos[a].z - g.pos[b].z;
             ASSERT_GE(std::sqrt(dx * dx + dy * dy + dz * dz), g.radius[a] + g.radius[b] - 1e-12);
         }
 }
@@ -125,8 +125,8 @@ file = ")" + dir + R"(/grains_settled.csv"
     const auto& g = again.grains().grains();
     Real top = 0, vmax = 0;
     for (Index i = 0; i < g.size(); ++i) {
-        top = std::max(top, g.z[std::size_t(i)]);
-        vmax = std::max(vmax, std::fabs(g.vz[std::size_t(i)]));
+        top = std::max(top, g.pos[std::size_t(i)].z);
+        vmax = std::max(vmax, std::fabs(g.vel[std::size_t(i)].z));
     }
     EXPECT_LT(top, 0.06); // 300 grains of 8 mm fill ~3 layers of the 0.1 x 0.1 m floor
     EXPECT_EQ(vmax, 0);
@@ -155,7 +155,7 @@ TEST(DemGrains, TangentialHistorySurvivesRebuildsAndReordering) {
     p.rolling = "epsd";
     rig.start(p, {m}, {-1, -1, -1}, {1, 1, 1});
     for (int s = 0; s < 5000; ++s) rig.solver->advance(rig.solver->dt()); // load the springs
-    const std::vector<Real> x0 = rig.grains.x;
+    const std::vector<Vec3> x0 = rig.grains.pos;
     const std::vector<std::uint32_t> id0 = rig.grains.id;
     for (int s = 0; s < 20000; ++s) {
         rig.solver->advance(rig.solver->dt());
@@ -164,7 +164,7 @@ TEST(DemGrains, TangentialHistorySurvivesRebuildsAndReordering) {
     for (std::size_t a = 0; a < x0.size(); ++a) {
         const auto b = std::size_t(std::find(rig.grains.id.begin(), rig.grains.id.end(), id0[a]) -
                                    rig.grains.id.begin());
-        EXPECT_NEAR(rig.grains.x[b], x0[a], 1e-6) << "grain " << id0[a];
+        EXPECT_NEAR(rig.grains.pos[b].x, x0[a].x, 1e-6) << "grain " << id0[a];
     }
 }
 
@@ -184,7 +184,7 @@ position = [0.05, 0.05, 0.005]
     // At rest the floor carries the weight whatever the contact count; the overlap shows how
     // many springs carry it: m g / k_n for one contact.
     const auto& g = sim.grains().grains();
-    const Real overlap = g.radius[0] - g.z[0], one_spring = g.mass[0] * 9.81 / 1e5;
+    const Real overlap = g.radius[0] - g.pos[0].z, one_spring = g.mass[0] * 9.81 / 1e5;
     EXPECT_NEAR(overlap / one_spring, 1, 0.02);
 }
 
@@ -222,9 +222,9 @@ velocity = [0.2, 0, 0.05]
     opt.quiet = true;
     sim.run(opt);
     const auto& g = sim.grains().grains();
-    EXPECT_NEAR(g.vz[0], 0.05, 1e-3);
+    EXPECT_NEAR(g.vel[0].z, 0.05, 1e-3);
     // Rolling without slip on a belt: the centre moves at 2/7 of the belt speed (solid sphere).
-    EXPECT_NEAR(g.vx[0] / 0.2, 2.0 / 7.0, 0.01);
+    EXPECT_NEAR(g.vel[0].x / 0.2, 2.0 / 7.0, 0.01);
 }
 
 TEST(DemGrains, InputErrorsNameTheKey) {
@@ -308,7 +308,7 @@ file = ")" + stl + R"("
         opt.quiet = true;
         sim.run(opt);
         const auto& g = sim.grains().grains();
-        const Real overlap = g.radius[0] - g.z[0], one_spring = g.mass[0] * 9.81 / 1e5;
+        const Real overlap = g.radius[0] - g.pos[0].z, one_spring = g.mass[0] * 9.81 / 1e5;
         EXPECT_NEAR(overlap / one_spring, 1, 0.02) << pos; // one contact, not several
     }
 }

@@ -66,6 +66,6 @@ TEST(DemWithSph, SubcyclesAndMatchesGrainsOnlyRun) {
     const auto ra = alone.run(opt);
     const auto rm = mixed.run(opt);
     EXPECT_LT(rm.result.steps, ra.result.steps / 2); // SPH steps, each with several DEM steps
-    EXPECT_NEAR(mixed.grains().grains().z[0], alone.grains().grains().z[0], 1e-3);
+    EXPECT_NEAR(mixed.grains().grains().pos[0].z, alone.grains().grains().pos[0].z, 1e-3);
     EXPECT_GT(mixed.grains().list_builds(), 1);
 }

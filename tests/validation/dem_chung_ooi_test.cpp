@@ -73,9 +73,9 @@ Impact normal_impact(const dem::Material& m, Real r, Real v, bool wall, Real dt_
     const Real dt = p.dt;
     auto overlap = [&]() {
         const auto& g = rig.grains;
-        if (wall) return r - g.z[0];
+        if (wall) return r - g.pos[0].z;
         const Index a = index_of(g, 0), b = index_of(g, 1);
-        return 2 * r - (g.z[std::size_t(b)] - g.z[std::size_t(a)]);
+        return 2 * r - (g.pos[std::size_t(b)].z - g.pos[std::size_t(a)].z);
     };
     Real t = 0, prev = overlap(), t_in = -1;
     for (long s = 0; s < long(4 * expected_tc / dt) + long(gap / v / dt) * 2 + 100; ++s) {
@@ -83,12 +83,12 @@ Impact normal_impact(const dem::Material& m, Real r, Real v, bool wall, Real dt_
         t += dt;
         const Real d = overlap();
         const Index top = wall ? 0 : index_of(rig.grains, 1);
-        out.fmax = std::max(out.fmax, std::fabs(rig.grains.fz[std::size_t(top)]));
+        out.fmax = std::max(out.fmax, std::fabs(rig.grains.force[std::size_t(top)].z));
         out.dmax = std::max(out.dmax, d);
         if (prev <= 0 && d > 0) t_in = t - dt + dt * (-prev) / (d - prev);
         if (prev > 0 && d <= 0 && t_in >= 0) {
             out.duration = t - dt + dt * prev / (prev - d) - t_in;
-            out.rebound = rig.grains.vz[std::size_t(top)];
+            out.rebound = rig.grains.vel[std::size_t(top)].z;
             break;
         }
         prev = d;

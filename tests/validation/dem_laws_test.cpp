@@ -24,11 +24,11 @@ Real rebound_ratio(const dem::Material& m, Real r, Real v) {
     bool touched = false;
     for (long s = 0; s < 1000000; ++s) {
         rig.solver->advance(rig.solver->dt());
-        const bool touching = rig.grains.z[0] < r;
+        const bool touching = rig.grains.pos[0].z < r;
         touched = touched || touching;
         if (touched && !touching) break;
     }
-    return rig.grains.vz[0] / v;
+    return rig.grains.vel[0].z / v;
 }
 
 } // namespace
@@ -84,7 +84,7 @@ TEST(DemLaws, ConstantTorqueRollingDecelerates) {
         rig.solver->advance(rig.solver->dt());
         t += rig.solver->dt();
         if (t < 0.05) continue;
-        const Real v = rig.grains.vx[0];
+        const Real v = rig.grains.vel[0].x;
         st += t, sv += v, stt += t * t, stv += t * v;
         ++n;
     }

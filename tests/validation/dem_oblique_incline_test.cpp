@@ -66,15 +66,15 @@ Oblique oblique_impact(Real angle_deg) {
     bool touched = false;
     for (int s = 0; s < 20000; ++s) {
         rig.solver->advance(p.dt);
-        const bool touching = rig.grains.z[0] < r;
+        const bool touching = rig.grains.pos[0].z < r;
         touched = touched || touching;
         if (touched && !touching) break;
     }
     const auto& g = rig.grains;
     // Chung & Ooi plot forward spin (rolling along +x on a floor below: w_y > 0) as negative.
-    const Real spin = -g.wy[0];
-    const Real vct = g.vx[0] - r * g.wy[0]; // contact-point tangential velocity (x)
-    return {g.vx[0] / vt, spin, std::atan(vct / g.vz[0]) * 180 / pi};
+    const Real spin = -g.spin[0].y;
+    const Real vct = g.vel[0].x - r * g.spin[0].y; // contact-point tangential velocity (x)
+    return {g.vel[0].x / vt, spin, std::atan(vct / g.vel[0].z) * 180 / pi};
 }
 
 } // namespace
@@ -146,7 +146,7 @@ TEST(DemIncline, RollingAndSlidingAccelerations) {
                 rig.solver->advance(rig.solver->dt());
                 t += rig.solver->dt();
                 if (t < 0.1) continue;
-                const Real v = rig.grains.vx[0];
+                const Real v = rig.grains.vel[0].x;
                 st += t, sv += v, stt += t * t, stv += t * v;
                 ++n;
             }

@@ -41,8 +41,7 @@ time::DtLimit DemSolver::compute_automatic_dt(Real safety) const {
         const std::size_t m = grains_.material[std::size_t(i)];
         mmin[m] = std::min(mmin[m], grains_.mass[std::size_t(i)]);
         rmin[m] = std::min(rmin[m], grains_.radius[std::size_t(i)]);
-        vmax = std::max(vmax, std::hypot(grains_.vx[std::size_t(i)], grains_.vy[std::size_t(i)],
-                                         grains_.vz[std::size_t(i)]));
+        vmax = std::max(vmax, norm(grains_.vel[std::size_t(i)]));
     }
     Real vref = params_.reference_velocity;
     if (vref <= 0) {
@@ -118,13 +117,17 @@ void DemSolver::rebuild() {
     ++builds_;
     if (n == 0) return;
     configure_grid();
-    grid_.build(grains_.x.data(), grains_.y.data(), grains_.z.data(), n);
+    const auto build_grid = [&] {
+        const Real* p = &grains_.pos[0].x;
+        grid_.build(p, p + 1, p + 2, n, 3);
+    };
+    build_grid();
     if (params_.reorder) {
         const std::vector<Index> perm = grid_.order();
         grains_.permute(perm);
         grain_slots_.permute(perm);
         wall_slots_.permute(perm);
-        grid_.build(grains_.x.data(), grains_.y.data(), grains_.z.data(), n);
+        build_grid();
     }
     const GrainView g = grains_.view();
     refresh_hot();
@@ -133,16 +136,20 @@ void DemSolver::rebuild() {
     grain_slots_.build(n, [&](Index i, auto&& emit) {
         const Real ri = g.radius[i];
         const std::uint32_t idi = g.id[i];
-        grid.for_each_neighbor(i, g.pos(i), g.x, g.y, g.z, [&](Index j, Vec3, Real r2) {
-            if (g.id[j] < idi) return;
-            const Real reach = ri + g.radius[j] + skin;
-            if (r2 < reach * reach) emit(j, g.id[j]);
-        });
+        const Real* p = &g.pos[0].x;
+        grid.for_each_neighbor(
+            i, g.pos[i], p, p + 1, p + 2,
+            [&](Index j, Vec3, Real r2) {
+                if (g.id[j] < idi) return;
+                const Real reach = ri + g.radius[j] + skin;
+                if (r2 < reach * reach) emit(j, g.id[j]);
+            },
+            3);
     });
     const auto& prims = walls_.primitives();
     const auto& wl = walls_.walls();
     wall_slots_.build(n, [&](Index i, auto&& emit) {
-        const Vec3 p = g.pos(i);
+        const Vec3 p = g.pos[i];
         const Real reach = g.radius[i] + skin;
         for (std::size_t k = 0; k < prims.size(); ++k) {
             if (!wl[std::size_t(prims[k].wall)].active) continue;
@@ -157,15 +164,15 @@ void DemSolver::configure_grid() {
     // directions), so that sparse grains in a large domain do not pay for empty cells.
     const Index n = grains_.size();
     Vec3 lo = domain_.hi, hi = domain_.lo;
-    const Real *x = grains_.x.data(), *y = grains_.y.data(), *z = grains_.z.data();
+    const Vec3* x = grains_.pos.data();
     Real lx = lo.x, ly = lo.y, lz = lo.z, hx = hi.x, hy = hi.y, hz = hi.z;
 #pragma omp parallel for schedule(static) reduction(min                                            \
                                                     : lx, ly, lz)                                  \
     reduction(max                                                                                  \
               : hx, hy, hz) if (n > parallel_min)
     for (Index i = 0; i < n; ++i) {
-        lx = std::min(lx, x[i]), ly = std::min(ly, y[i]), lz = std::min(lz, z[i]);
-        hx = std::max(hx, x[i]), hy = std::max(hy, y[i]), hz = std::max(hz, z[i]);
+        lx = std::min(lx, x[i].x), ly = std::min(ly, x[i].y), lz = std::min(lz, x[i].z);
+        hx = std::max(hx, x[i].x), hy = std::max(hy, x[i].y), hz = std::max(hz, x[i].z);
     }
     lo = {lx, ly, lz}, hi = {hx, hy, hz};
     const Real radius = 2 * max_radius_ + skin_;
@@ -194,16 +201,15 @@ void DemSolver::kick_drift(Real h) {
         // prediction v* = v_n+1/2 + (h/2) a_n, so that the dashpots see the velocity at the time
         // of the positions (second-order damping); the final kick adds (h/2)(a_n+1 - a_n).
         const Real im = g.inv_mass[i], ii = g.inv_inertia[i];
-        const Real dvx = half * g.fx[i] * im, dvy = plane ? 0 : half * g.fy[i] * im,
-                   dvz = half * g.fz[i] * im;
-        const Real vel[3] = {g.vx[i] + dvx, plane ? 0 : g.vy[i] + dvy, g.vz[i] + dvz};
-        g.vx[i] = vel[0] + dvx, g.vy[i] = vel[1] + dvy, g.vz[i] = vel[2] + dvz;
-        g.wx[i] = plane ? 0 : g.wx[i] + h * g.tx[i] * ii;
-        g.wy[i] += h * g.ty[i] * ii;
-        g.wz[i] = plane ? 0 : g.wz[i] + h * g.tz[i] * ii;
-        Real* pos[3] = {g.x + i, g.y + i, g.z + i};
+        Vec3 dv = (half * im) * g.force[i];
+        Vec3 v = g.vel[i] + dv, w = g.spin[i] + (h * ii) * g.torque[i];
+        if (plane) dv.y = 0, v.y = 0, w.x = 0, w.z = 0;
+        const Real vel[3] = {v.x, v.y, v.z};
+        g.vel[i] = v + dv;
+        g.spin[i] = w;
+        Vec3 p = g.pos[i];
         for (int d = 0; d < 3; ++d) {
-            Real x = *pos[d] + h * vel[d];
+            Real x = p[d] + h * vel[d];
             if (dom.periodic[d]) {
                 const Real len = dom.hi[d] - dom.lo[d];
                 if (x >= dom.hi[d]) x -= len;
@@ -211,12 +217,13 @@ void DemSolver::kick_drift(Real h) {
             } else if (!(plane && d == 1) && !(x >= dom.lo[d] && x <= dom.hi[d])) {
                 ++bad; // outside the domain, or NaN
             }
-            *pos[d] = x;
+            p[d] = x;
         }
+        g.pos[i] = p;
         GrainState& hs = hot[i];
-        hs.x = {*pos[0], *pos[1], *pos[2]};
-        hs.v = {g.vx[i], g.vy[i], g.vz[i]};
-        hs.w = {g.wx[i], g.wy[i], g.wz[i]};
+        hs.x = p;
+        hs.v = g.vel[i];
+        hs.w = w;
         const Real v2 = vel[0] * vel[0] + vel[1] * vel[1] + vel[2] * vel[2];
         vmax2 = std::max(vmax2, v2);
     }
@@ -357,13 +364,11 @@ void DemSolver::forces(Real half_kick) {
             if (plane) f.y = 0, t.x = 0, t.z = 0;
             if (half > 0) {
                 const Real im = g.inv_mass[i], ii = g.inv_inertia[i];
-                g.vx[i] += half * (f.x - g.fx[i]) * im, g.vy[i] += half * (f.y - g.fy[i]) * im;
-                g.vz[i] += half * (f.z - g.fz[i]) * im;
-                g.wx[i] += half * (t.x - g.tx[i]) * ii, g.wy[i] += half * (t.y - g.ty[i]) * ii;
-                g.wz[i] += half * (t.z - g.tz[i]) * ii;
+                g.vel[i] += (half * im) * (f - g.force[i]);
+                g.spin[i] += (half * ii) * (t - g.torque[i]);
             }
-            g.fx[i] = f.x, g.fy[i] = f.y, g.fz[i] = f.z;
-            g.tx[i] = t.x, g.ty[i] = t.y, g.tz[i] = t.z;
+            g.force[i] = f;
+            g.torque[i] = t;
         }
 #pragma omp critical(dem_wall_sum)
         for (std::size_t k = 0; k < local.size(); ++k) wall_sum[k] += local[k];
@@ -407,8 +412,7 @@ void DemSolver::remove_wall(int wall) {
 }
 
 void DemSolver::stop_grains() {
-    for (auto* v : {&grains_.vx, &grains_.vy, &grains_.vz, &grains_.wx, &grains_.wy, &grains_.wz})
-        std::fill(v->begin(), v->end(), Real(0));
+    for (auto* v : {&grains_.vel, &grains_.spin}) std::fill(v->begin(), v->end(), Vec3{});
     refresh_hot();
 }
 
@@ -426,8 +430,7 @@ Real DemSolver::unbalanced_ratio() const {
     if (n == 0 || 2 * contacts_ < long(n)) return std::numeric_limits<Real>::max();
     Real sum = 0;
     for (Index i = 0; i < n; ++i)
-        sum += std::hypot(grains_.fx[std::size_t(i)], grains_.fy[std::size_t(i)],
-                          grains_.fz[std::size_t(i)]);
+        sum += norm(grains_.force[std::size_t(i)]);
     return (sum / Real(n)) / mean_contact_force();
 }
 
@@ -435,9 +438,9 @@ void DemSolver::check_health(Real t) const {
     if (!bad_) return;
     for (Index i = 0; i < grains_.size(); ++i) {
         const std::size_t k = std::size_t(i);
-        const Vec3 p{grains_.x[k], grains_.y[k], grains_.z[k]};
+        const Vec3 p = grains_.pos[k], v = grains_.vel[k];
         const bool nan = !std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) ||
-                         !std::isfinite(grains_.vx[k]) || !std::isfinite(grains_.vz[k]);
+                         !std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z);
         bool out = false;
         for (int d = 0; d < 3; ++d)
             if (!(params_.dim == 2 && d == 1) && !domain_.periodic[d])
@@ -448,7 +451,7 @@ void DemSolver::check_health(Real t) const {
                 "({:.4g}, {:.4g}, {:.4g}) m/s; domain [{:.4g}, {:.4g}, {:.4g}]-[{:.4g}, {:.4g}, "
                 "{:.4g}] m. Check the time step (dem.dt, dem.safety) and the walls",
                 grains_.id[k], nan ? "has a non-finite state" : "left the domain", t, p.x, p.y, p.z,
-                grains_.vx[k], grains_.vy[k], grains_.vz[k], domain_.lo.x, domain_.lo.y,
+                v.x, v.y, v.z, domain_.lo.x, domain_.lo.y,
                 domain_.lo.z, domain_.hi.x, domain_.hi.y, domain_.hi.z));
     }
     throw InstabilityError(fmt::format("DEM state became non-finite at t = {:.6g} s", t));

@@ -11,7 +11,7 @@ struct GrainState {
     Real r, m;
     int material;
     DF_HD static GrainState load(const GrainView& g, Index i) {
-        return {g.pos(i), g.vel(i), g.spin(i), g.radius[i], g.mass[i], int(g.material[i])};
+        return {g.pos[i], g.vel[i], g.spin[i], g.radius[i], g.mass[i], int(g.material[i])};
     }
 };
 

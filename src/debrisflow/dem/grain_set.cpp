@@ -4,9 +4,11 @@
 namespace debrisflow::dem {
 
 Index GrainSet::add(Vec3 p, Vec3 v, Real r, Real m, Real inertia, std::uint8_t mat) {
-    x.push_back(p.x), y.push_back(p.y), z.push_back(p.z);
-    vx.push_back(v.x), vy.push_back(v.y), vz.push_back(v.z);
-    for (auto* f : {&wx, &wy, &wz, &fx, &fy, &fz, &tx, &ty, &tz}) f->push_back(0);
+    pos.push_back(p);
+    vel.push_back(v);
+    spin.push_back({});
+    force.push_back({});
+    torque.push_back({});
     radius.push_back(r);
     mass.push_back(m);
     inv_mass.push_back(1 / m);
@@ -17,7 +19,7 @@ Index GrainSet::add(Vec3 p, Vec3 v, Real r, Real m, Real inertia, std::uint8_t m
 }
 
 void GrainSet::set_spin(Index i, Vec3 w) {
-    wx[std::size_t(i)] = w.x, wy[std::size_t(i)] = w.y, wz[std::size_t(i)] = w.z;
+    spin[std::size_t(i)] = w;
 }
 
 namespace {
@@ -30,10 +32,10 @@ void apply(std::vector<T>& v, const std::vector<Index>& perm, std::vector<T>& tm
 } // namespace
 
 void GrainSet::permute(const std::vector<Index>& perm) {
+    std::vector<Vec3> tmp3;
+    for (auto* f : {&pos, &vel, &spin, &force, &torque}) apply(*f, perm, tmp3);
     std::vector<Real> tmp;
-    for (auto* f : {&x, &y, &z, &vx, &vy, &vz, &wx, &wy, &wz, &fx, &fy, &fz, &tx, &ty, &tz, &radius,
-                    &mass, &inv_mass, &inv_inertia})
-        apply(*f, perm, tmp);
+    for (auto* f : {&radius, &mass, &inv_mass, &inv_inertia}) apply(*f, perm, tmp);
     std::vector<std::uint8_t> t8;
     apply(material, perm, t8);
     std::vector<std::uint32_t> t32;
@@ -41,9 +43,7 @@ void GrainSet::permute(const std::vector<Index>& perm) {
 }
 
 GrainView GrainSet::view() {
-    return {x.data(),      y.data(),    z.data(),        vx.data(),          vy.data(),
-            vz.data(),     wx.data(),   wy.data(),       wz.data(),          fx.data(),
-            fy.data(),     fz.data(),   tx.data(),       ty.data(),          tz.data(),
+    return {pos.data(),    vel.data(),  spin.data(),     force.data(),       torque.data(),
             radius.data(), mass.data(), inv_mass.data(), inv_inertia.data(), material.data(),
             id.data(),     size()};
 }

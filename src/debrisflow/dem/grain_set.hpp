@@ -9,32 +9,27 @@ namespace debrisflow::dem {
 
 // Trivially copyable view of a GrainSet: raw pointers only, usable in OpenMP and CUDA loops.
 struct GrainView {
-    Real *x, *y, *z;
-    Real *vx, *vy, *vz;
-    Real *wx, *wy, *wz; // angular velocity [rad/s]
-    Real *fx, *fy, *fz; // force [N]
-    Real *tx, *ty, *tz; // torque [N m]
+    Vec3 *pos, *vel, *spin; // position [m], velocity [m/s], angular velocity [rad/s]
+    Vec3 *force, *torque;   // [N], [N m]
     Real *radius, *mass, *inv_mass, *inv_inertia;
     std::uint8_t* material;
     std::uint32_t* id;
     Index n;
-
-    DF_HD Vec3 pos(Index i) const { return {x[i], y[i], z[i]}; }
-    DF_HD Vec3 vel(Index i) const { return {vx[i], vy[i], vz[i]}; }
-    DF_HD Vec3 spin(Index i) const { return {wx[i], wy[i], wz[i]}; }
 };
 static_assert(std::is_trivially_copyable_v<GrainView>);
 
 // Structure-of-arrays storage of spherical grains (discs in 2D, which live in the x-z plane and
-// spin about y). `id` is persistent across reordering; contact history is keyed by it.
+// spin about y); vector quantities are stored as arrays of 3-vectors (one memory stream each,
+// which is what the bandwidth-bound DEM loops need). `id` is persistent across reordering;
+// contact history is keyed by it.
 class GrainSet {
 public:
-    std::vector<Real> x, y, z, vx, vy, vz, wx, wy, wz, fx, fy, fz, tx, ty, tz;
+    std::vector<Vec3> pos, vel, spin, force, torque;
     std::vector<Real> radius, mass, inv_mass, inv_inertia;
     std::vector<std::uint8_t> material;
     std::vector<std::uint32_t> id;
 
-    Index size() const { return Index(x.size()); }
+    Index size() const { return Index(pos.size()); }
     // Adds a grain of the given mass and moment of inertia (solid sphere 2/5 m r^2, disc
     // 1/2 m r^2); returns its index.
     Index add(Vec3 pos, Vec3 vel, Real r, Real m, Real inertia, std::uint8_t mat);

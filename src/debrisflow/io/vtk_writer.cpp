@@ -64,10 +64,10 @@ void VtkSeries::write(const dem::GrainSet& g, Real t) {
     std::vector<std::uint8_t> mat(g.material);
     std::vector<std::uint32_t> id(g.id);
     for (std::size_t i = 0; i < n; ++i) {
-        const float p[3] = {float(g.x[i]), float(g.y[i]), float(g.z[i])};
-        const float v[3] = {float(g.vx[i]), float(g.vy[i]), float(g.vz[i])};
-        const float w[3] = {float(g.wx[i]), float(g.wy[i]), float(g.wz[i])};
-        const float f[3] = {float(g.fx[i]), float(g.fy[i]), float(g.fz[i])};
+        const float p[3] = {float(g.pos[i].x), float(g.pos[i].y), float(g.pos[i].z)};
+        const float v[3] = {float(g.vel[i].x), float(g.vel[i].y), float(g.vel[i].z)};
+        const float w[3] = {float(g.spin[i].x), float(g.spin[i].y), float(g.spin[i].z)};
+        const float f[3] = {float(g.force[i].x), float(g.force[i].y), float(g.force[i].z)};
         for (int d = 0; d < 3; ++d) {
             pos[3 * i + std::size_t(d)] = p[d];
             vel[3 * i + std::size_t(d)] = v[d];

@@ -29,15 +29,16 @@ void CellGrid::configure(Vec3 lo, Vec3 hi, Real radius, int dim, std::array<bool
     start_.assign(std::size_t(cell_count()) + 1, 0);
 }
 
-void CellGrid::build(const Real* x, const Real* y, const Real* z, Index n) {
+void CellGrid::build(const Real* x, const Real* y, const Real* z, Index n, int stride) {
     cell_of_.resize(n);
     order_.resize(n);
     const GridView g = view_;
     const int n0 = nc_[0], n1 = nc_[1];
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
+        const std::size_t k = std::size_t(i) * std::size_t(stride);
         cell_of_[i] =
-            g.cell_coord(x[i], 0) + n0 * (g.cell_coord(y[i], 1) + n1 * g.cell_coord(z[i], 2));
+            g.cell_coord(x[k], 0) + n0 * (g.cell_coord(y[k], 1) + n1 * g.cell_coord(z[k], 2));
     }
     const int nc = cell_count();
     count_.assign(std::size_t(nc) + 1, 0);

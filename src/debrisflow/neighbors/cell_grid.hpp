@@ -11,7 +11,8 @@ class CellGrid {
 public:
     void configure(Vec3 lo, Vec3 hi, Real radius, int dim, std::array<bool, 3> periodic);
     // Sorts particles into cells; afterwards order() lists particle indices cell by cell.
-    void build(const Real* x, const Real* y, const Real* z, Index n);
+    // Coordinates of particle i are x[i * stride] ... (stride 3 for arrays of 3-vectors).
+    void build(const Real* x, const Real* y, const Real* z, Index n, int stride = 1);
     GridView view() const;
     const std::vector<Index>& order() const { return order_; }
     int cell_count() const { return nc_[0] * nc_[1] * nc_[2]; }

@@ -41,10 +41,11 @@ struct GridView {
     }
 
     // Calls f(j, r_ij, r2) for every particle j != self with |xi - x_j| < search radius.
+    // Coordinates of particle j are px[j * stride] ... (stride 3 for arrays of 3-vectors).
     template <class F>
     DF_HD void for_each_neighbor(Index self, Vec3 xi, const Real* px, const Real* py,
-                                 const Real* pz, F&& f) const {
-        const Positions pos{px, py, pz};
+                                 const Real* pz, F&& f, int stride = 1) const {
+        const Positions pos{px, py, pz, stride};
         const int c0 = cell_coord(xi.x, 0), c1 = cell_coord(xi.y, 1), c2 = cell_coord(xi.z, 2);
         const int r1 = nc[1] > 1 ? 1 : 0, r2 = nc[2] > 1 ? 1 : 0;
         for (int dz = -r2; dz <= r2; ++dz) {
@@ -77,12 +78,14 @@ struct GridView {
 private:
     struct Positions {
         const Real *x, *y, *z;
+        int stride;
     };
     template <class F>
     DF_HD void visit_range(Index a, Index b, Index self, Vec3 xi, Positions p, F& f) const {
         for (Index k = a; k < b; ++k) {
             const Index j = order[k];
-            const Vec3 r = separation(xi, {p.x[j], p.y[j], p.z[j]});
+            const std::size_t s = std::size_t(j) * std::size_t(p.stride);
+            const Vec3 r = separation(xi, {p.x[s], p.y[s], p.z[s]});
             const Real r2 = dot(r, r);
             if (r2 < radius2 && j != self) f(j, r, r2);
         }

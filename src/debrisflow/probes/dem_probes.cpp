@@ -22,10 +22,10 @@ std::vector<Real> SectionProbe::sample(Real, const ProbeContext& ctx) {
     Real m = 0, mv = 0, md = 0;
     for (Index i = 0; i < g.size(); ++i) {
         const std::size_t k = std::size_t(i);
-        if (!inside({g.x[k], g.y[k], g.z[k]}, lo_, hi_)) continue;
-        tops.push_back(g.z[k] + g.radius[k] - bed_);
+        if (!inside({g.pos[k].x, g.pos[k].y, g.pos[k].z}, lo_, hi_)) continue;
+        tops.push_back(g.pos[k].z + g.radius[k] - bed_);
         m += g.mass[k];
-        mv += g.mass[k] * g.vx[k];
+        mv += g.mass[k] * g.vel[k].x;
         md += g.mass[k] * 2 * g.radius[k];
     }
     if (tops.empty()) return {0, 0, 0, 0, 0, 0};
@@ -48,9 +48,9 @@ std::vector<Real> KineticEnergyProbe::sample(Real, const ProbeContext& ctx) {
     long n = 0;
     for (Index i = 0; i < g.size(); ++i) {
         const std::size_t k = std::size_t(i);
-        if (!inside({g.x[k], g.y[k], g.z[k]}, lo_, hi_)) continue;
-        ek += 0.5 * g.mass[k] * (g.vx[k] * g.vx[k] + g.vy[k] * g.vy[k] + g.vz[k] * g.vz[k]);
-        er += 0.5 / g.inv_inertia[k] * (g.wx[k] * g.wx[k] + g.wy[k] * g.wy[k] + g.wz[k] * g.wz[k]);
+        if (!inside({g.pos[k].x, g.pos[k].y, g.pos[k].z}, lo_, hi_)) continue;
+        ek += 0.5 * g.mass[k] * (g.vel[k].x * g.vel[k].x + g.vel[k].y * g.vel[k].y + g.vel[k].z * g.vel[k].z);
+        er += 0.5 / g.inv_inertia[k] * (g.spin[k].x * g.spin[k].x + g.spin[k].y * g.spin[k].y + g.spin[k].z * g.spin[k].z);
         ++n;
     }
     return {ek, er, Real(n)};
@@ -62,7 +62,7 @@ std::vector<Real> RunupProbe::sample(Real, const ProbeContext& ctx) {
     Real top = 0;
     for (Index i = 0; i < g.size(); ++i) {
         const std::size_t k = std::size_t(i);
-        const Vec3 p{g.x[k], g.y[k], g.z[k]};
+        const Vec3 p{g.pos[k].x, g.pos[k].y, g.pos[k].z};
         const Real reach = 1.05 * g.radius[k];
         for (const auto& w : prims) {
             if (w.wall != wall_) continue;
@@ -81,7 +81,7 @@ std::vector<Real> MassFluxProbe::sample(Real t, const ProbeContext& ctx) {
         const std::size_t k = std::size_t(i);
         const std::uint32_t id = g.id[k];
         if (side_.size() <= id) side_.resize(std::size_t(id) + 1, 0);
-        const Real s = dot(Vec3{g.x[k], g.y[k], g.z[k]} - point_, normal_);
+        const Real s = dot(Vec3{g.pos[k].x, g.pos[k].y, g.pos[k].z} - point_, normal_);
         const std::int8_t now = s >= 0 ? 1 : -1;
         if (side_[id] != 0 && side_[id] != now) cumulative_ += now * g.mass[k];
         side_[id] = now;

@@ -230,8 +230,8 @@ void build_grains(const io::CaseSpec& c, dem::GrainSet& g) {
         for (Index i = before; i < g.size(); ++i)
             for (int d = 0; d < 3; ++d) {
                 if (c.dim == 2 && d == 1) continue;
-                const Real x = d == 0 ? g.x[std::size_t(i)]
-                                      : (d == 1 ? g.y[std::size_t(i)] : g.z[std::size_t(i)]);
+                const Real x = d == 0 ? g.pos[std::size_t(i)].x
+                                      : (d == 1 ? g.pos[std::size_t(i)].y : g.pos[std::size_t(i)].z);
                 if (!(x >= c.domain.lo[d] && x <= c.domain.hi[d]))
                     throw InputError(fmt::format("{}: grains '{}' extend outside the domain in {}",
                                                  c.file, b.name, "xyz"[d]));
@@ -317,8 +317,8 @@ void write_grain_state(const std::string& path, const dem::GrainSet& g,
         const std::size_t k = std::size_t(i);
         out << fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},"
                            "{:.17g},{:.17g},{}\n",
-                           g.x[k], g.y[k], g.z[k], g.vx[k], g.vy[k], g.vz[k], g.wx[k], g.wy[k],
-                           g.wz[k], 2 * g.radius[k], materials[g.material[k]].name);
+                           g.pos[k].x, g.pos[k].y, g.pos[k].z, g.vel[k].x, g.vel[k].y, g.vel[k].z, g.spin[k].x, g.spin[k].y,
+                           g.spin[k].z, 2 * g.radius[k], materials[g.material[k]].name);
     }
 }
 
