@@ -33,6 +33,7 @@ def main():
     ap.add_argument("run")
     ap.add_argument("--label", default=None)
     ap.add_argument("--figures", default=None)
+    ap.add_argument("--cos", default=None, help="cos(slope) for Fr_dense (0.866 at 30 deg)")
     a = ap.parse_args()
     label = a.label or os.path.basename(os.path.normpath(a.run))
     probes = os.path.join(a.run, "probes")
@@ -45,6 +46,12 @@ def main():
         body = h >= 0.5 * h.max()
         out.update(v=v[body].mean(), h=h[body].mean(), Fr=fr[body].mean(), Savage=sav[body].mean(),
                    body_from=t[body].min(), body_to=t[body].max())
+        if d.shape[1] > 7:
+            # Depth of a dense flow at the paper's initial bulk density (1611 kg/m3 for 10 mm
+            # glass, solid fraction 1611/2550) and the Froude number with it.
+            hd = d[:, 7][body] / (1611 / 2550)
+            cos_t = float(a.cos) if a.cos else 1.0
+            out.update(h_dense=hd.mean(), Fr_dense=(v[body] / np.sqrt(9.81 * hd * cos_t)).mean())
         axes[0].plot(t, v, label="v [m/s]")
         axes[0].plot(t, 100 * h, label="h [cm]")
         axes[0].axvspan(t[body].min(), t[body].max(), color="0.9")

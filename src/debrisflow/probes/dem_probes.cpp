@@ -19,7 +19,7 @@ SectionProbe::SectionProbe(const io::ProbeSpec& s, const io::CaseSpec& c)
 std::vector<Real> SectionProbe::sample(Real, const ProbeContext& ctx) {
     const auto& g = ctx.dem->grains();
     std::vector<Real> tops;
-    Real m = 0, mv = 0, md = 0;
+    Real m = 0, mv = 0, md = 0, vs = 0;
     for (Index i = 0; i < g.size(); ++i) {
         const std::size_t k = std::size_t(i);
         if (!inside({g.pos[k].x, g.pos[k].y, g.pos[k].z}, lo_, hi_)) continue;
@@ -27,8 +27,9 @@ std::vector<Real> SectionProbe::sample(Real, const ProbeContext& ctx) {
         m += g.mass[k];
         mv += g.mass[k] * g.vel[k].x;
         md += g.mass[k] * 2 * g.radius[k];
+        vs += g.mass[k] / ctx.dem->materials()[g.material[k]].density;
     }
-    if (tops.empty()) return {0, 0, 0, 0, 0, 0};
+    if (tops.empty()) return {0, 0, 0, 0, 0, 0, 0};
     std::sort(tops.begin(), tops.end());
     const Real h = tops[std::min(tops.size() - 1, std::size_t(0.95 * Real(tops.size())))];
     const Real v = mv / m, d = md / m;
@@ -39,7 +40,8 @@ std::vector<Real> SectionProbe::sample(Real, const ProbeContext& ctx) {
     const Real rate = h > 0 ? v / h : 0;
     const Real savage = h > 0 && tan_t > 0 ? rate * rate * d * d / (gmag * h * tan_t) : 0;
     const Real rho = h > 0 ? m / ((hi_.x - lo_.x) * width_ * h) : 0;
-    return {h, v, rho, fr, savage, Real(tops.size())};
+    const Real h_solid = vs / ((hi_.x - lo_.x) * width_);
+    return {h, v, rho, fr, savage, Real(tops.size()), h_solid};
 }
 
 std::vector<Real> KineticEnergyProbe::sample(Real, const ProbeContext& ctx) {

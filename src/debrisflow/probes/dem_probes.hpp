@@ -7,7 +7,9 @@ namespace debrisflow::probes {
 // in the x-z plane (slope theta = atan(|g_x| / |g_z|)): flow depth h (95th percentile of the
 // grain tops above the bed), depth-averaged velocity v (mass-weighted mean v_x), bulk density
 // (grain mass / (window length x width x h)), Froude number v / sqrt(|g| h cos theta) and
-// Savage number (v/h)^2 d^2 / (|g| h tan theta) with d the mass-weighted mean diameter.
+// Savage number (v/h)^2 d^2 / (|g| h tan theta) with d the mass-weighted mean diameter; also
+// the solid-equivalent depth m / (rho_s x window length x width), which divided by a solid
+// fraction gives a depth independent of the dilute surface layer.
 class SectionProbe : public Probe {
 public:
     SectionProbe(const io::ProbeSpec& s, const io::CaseSpec& c);
