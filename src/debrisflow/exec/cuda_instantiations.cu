@@ -1,5 +1,7 @@
-// Compiles the host/device SPH functors with nvcc and launches them from a CUDA kernel, so
-// that every per-pair rule stays device-callable. No GPU is needed to compile this file.
+// Compiles the host/device SPH and DEM functors with nvcc and launches them from a CUDA
+// kernel, so that every per-pair rule stays device-callable. No GPU is needed to compile this
+// file.
+#include "debrisflow/dem/grain_contact_k.hpp"
 #include "debrisflow/kernels/cubic_spline_k.hpp"
 #include "debrisflow/kernels/wendland_c2_k.hpp"
 #include "debrisflow/models/density_diffusion_k.hpp"
@@ -32,7 +34,47 @@ template <class K> void instantiate_kernel() {
     launch(0, sph::SpsStress<K>{});
 }
 
+// Every grain's contacts with its candidate partners and wall primitives, as a per-grain
+// gather (each thread owns grain i; j's reaction is left to j's own thread in a full list).
+struct DemContacts {
+    dem::GrainView g;
+    dem::PairTable table;
+    const Index *count, *partner;
+    dem::ContactHistory* history;
+    const dem::WallPrimitive* prims;
+    Index capacity;
+    Real dt;
+    DF_HD void operator()(Index i) const {
+        const dem::GrainState si = dem::GrainState::load(g, i);
+        Vec3 f{}, t{};
+        for (Index k = 0; k < count[i]; ++k) {
+            const Index s = i * capacity + k;
+            const dem::GrainState sj = dem::GrainState::load(g, partner[s]);
+            const Vec3 r = si.x - sj.x;
+            const Real d2 = dot(r, r), rs = si.r + sj.r;
+            if (d2 >= rs * rs) continue;
+            const auto c = dem::grain_pair_force(table(si.material, sj.material), si, sj, r, d2,
+                                                 dt, history[s]);
+            f += c.force_i;
+            t += c.torque_i;
+        }
+        const dem::WallPrimitive& w = prims[0];
+        const Vec3 q = dem::closest_point(w, si.x);
+        const Real d = dem::wall_distance(w, si.x, q);
+        if (d < si.r) {
+            dem::ContactHistory h{};
+            const auto c = dem::wall_contact_force(table(si.material, si.material), si, w, q, d,
+                                                   Vec3{}, dt, h);
+            f += c.force;
+            t += c.torque;
+        }
+        g.force[i] = f;
+        g.torque[i] = t;
+    }
+};
+
 void instantiate_all() {
+    launch(0, DemContacts{});
     instantiate_kernel<kernels::WendlandC2>();
     instantiate_kernel<kernels::CubicSpline>();
 }
