@@ -69,7 +69,8 @@ region = { shape = "box", min = [0, 0, 0], max = [0.1, 0.1, 0.25] }
     for (Index i = 0; i < g.size(); ++i)
         for (Index j = i + 1; j < g.size(); ++j) {
             const std::size_t a = std::size_t(i), b = std::size_t(j);
-            const Real dx = g.pos[a].x - g.pos[b].x, dy = g.pos[a].y - g.pos[b].y, dz = g.pos[a].z - g.pos[b].z;
+            const Real dx = g.pos[a].x - g.pos[b].x, dy = g.pos[a].y - g.pos[b].y,
+                       dz = g.pos[a].z - g.pos[b].z;
             ASSERT_GE(std::sqrt(dx * dx + dy * dy + dz * dz), g.radius[a] + g.radius[b] - 1e-12);
         }
 }

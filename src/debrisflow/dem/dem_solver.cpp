@@ -429,8 +429,7 @@ Real DemSolver::unbalanced_ratio() const {
     // few hard collisions among falling grains would make the ratio small.
     if (n == 0 || 2 * contacts_ < long(n)) return std::numeric_limits<Real>::max();
     Real sum = 0;
-    for (Index i = 0; i < n; ++i)
-        sum += norm(grains_.force[std::size_t(i)]);
+    for (Index i = 0; i < n; ++i) sum += norm(grains_.force[std::size_t(i)]);
     return (sum / Real(n)) / mean_contact_force();
 }
 
@@ -451,8 +450,8 @@ void DemSolver::check_health(Real t) const {
                 "({:.4g}, {:.4g}, {:.4g}) m/s; domain [{:.4g}, {:.4g}, {:.4g}]-[{:.4g}, {:.4g}, "
                 "{:.4g}] m. Check the time step (dem.dt, dem.safety) and the walls",
                 grains_.id[k], nan ? "has a non-finite state" : "left the domain", t, p.x, p.y, p.z,
-                v.x, v.y, v.z, domain_.lo.x, domain_.lo.y,
-                domain_.lo.z, domain_.hi.x, domain_.hi.y, domain_.hi.z));
+                v.x, v.y, v.z, domain_.lo.x, domain_.lo.y, domain_.lo.z, domain_.hi.x, domain_.hi.y,
+                domain_.hi.z));
     }
     throw InstabilityError(fmt::format("DEM state became non-finite at t = {:.6g} s", t));
 }

@@ -43,9 +43,9 @@ void GrainSet::permute(const std::vector<Index>& perm) {
 }
 
 GrainView GrainSet::view() {
-    return {pos.data(),    vel.data(),  spin.data(),     force.data(),       torque.data(),
-            radius.data(), mass.data(), inv_mass.data(), inv_inertia.data(), material.data(),
-            id.data(),     size()};
+    return {pos.data(),         vel.data(),      spin.data(), force.data(),
+            torque.data(),      radius.data(),   mass.data(), inv_mass.data(),
+            inv_inertia.data(), material.data(), id.data(),   size()};
 }
 
 Real GrainSet::total_mass() const {

@@ -51,8 +51,10 @@ std::vector<Real> KineticEnergyProbe::sample(Real, const ProbeContext& ctx) {
     for (Index i = 0; i < g.size(); ++i) {
         const std::size_t k = std::size_t(i);
         if (!inside({g.pos[k].x, g.pos[k].y, g.pos[k].z}, lo_, hi_)) continue;
-        ek += 0.5 * g.mass[k] * (g.vel[k].x * g.vel[k].x + g.vel[k].y * g.vel[k].y + g.vel[k].z * g.vel[k].z);
-        er += 0.5 / g.inv_inertia[k] * (g.spin[k].x * g.spin[k].x + g.spin[k].y * g.spin[k].y + g.spin[k].z * g.spin[k].z);
+        ek += 0.5 * g.mass[k] *
+              (g.vel[k].x * g.vel[k].x + g.vel[k].y * g.vel[k].y + g.vel[k].z * g.vel[k].z);
+        er += 0.5 / g.inv_inertia[k] *
+              (g.spin[k].x * g.spin[k].x + g.spin[k].y * g.spin[k].y + g.spin[k].z * g.spin[k].z);
         ++n;
     }
     return {ek, er, Real(n)};

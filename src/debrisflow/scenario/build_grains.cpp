@@ -230,8 +230,9 @@ void build_grains(const io::CaseSpec& c, dem::GrainSet& g) {
         for (Index i = before; i < g.size(); ++i)
             for (int d = 0; d < 3; ++d) {
                 if (c.dim == 2 && d == 1) continue;
-                const Real x = d == 0 ? g.pos[std::size_t(i)].x
-                                      : (d == 1 ? g.pos[std::size_t(i)].y : g.pos[std::size_t(i)].z);
+                const Real x = d == 0
+                                   ? g.pos[std::size_t(i)].x
+                                   : (d == 1 ? g.pos[std::size_t(i)].y : g.pos[std::size_t(i)].z);
                 if (!(x >= c.domain.lo[d] && x <= c.domain.hi[d]))
                     throw InputError(fmt::format("{}: grains '{}' extend outside the domain in {}",
                                                  c.file, b.name, "xyz"[d]));
@@ -317,8 +318,9 @@ void write_grain_state(const std::string& path, const dem::GrainSet& g,
         const std::size_t k = std::size_t(i);
         out << fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},"
                            "{:.17g},{:.17g},{}\n",
-                           g.pos[k].x, g.pos[k].y, g.pos[k].z, g.vel[k].x, g.vel[k].y, g.vel[k].z, g.spin[k].x, g.spin[k].y,
-                           g.spin[k].z, 2 * g.radius[k], materials[g.material[k]].name);
+                           g.pos[k].x, g.pos[k].y, g.pos[k].z, g.vel[k].x, g.vel[k].y, g.vel[k].z,
+                           g.spin[k].x, g.spin[k].y, g.spin[k].z, 2 * g.radius[k],
+                           materials[g.material[k]].name);
     }
 }
 
