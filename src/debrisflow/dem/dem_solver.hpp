@@ -73,7 +73,6 @@ private:
     void refresh_hot();
     void kick_drift(Real h);
     void forces(Real half_kick);
-    time::DtLimit compute_automatic_dt(Real safety) const;
 
     DemParams params_;
     GrainSet& grains_;
