@@ -24,7 +24,8 @@ def read(path):
     with open(path) as f:
         rows = list(csv.reader(f))
     head = rows[0]
-    data = np.array([[float(x) for x in r] for r in rows[1:]])
+    # A run still in progress may have a partial last line.
+    data = np.array([[float(x) for x in r] for r in rows[1:] if len(r) == len(head)])
     return head, data
 
 
