@@ -25,6 +25,21 @@ struct DemRig {
         dem::WallPrimitive p{point, {}, {}, normal, dem::PrimitiveType::plane, 0};
         walls.add(w, {p});
     }
+    // Runs to t_end and returns the least-squares slope of grain 0's v_x over [t_fit, t_end]:
+    // its acceleration along x.
+    Real fitted_acceleration(Real t_fit, Real t_end) {
+        Real st = 0, sv = 0, stt = 0, stv = 0, t = 0;
+        long n = 0;
+        while (t < t_end) {
+            solver->advance(solver->dt());
+            t += solver->dt();
+            if (t < t_fit) continue;
+            const Real v = grains.vel[0].x;
+            st += t, sv += v, stt += t * t, stv += t * v;
+            ++n;
+        }
+        return (Real(n) * stv - st * sv) / (Real(n) * stt - st * st);
+    }
     void start(const dem::DemParams& params, std::vector<dem::Material> mats, Vec3 lo, Vec3 hi,
                const std::vector<dem::PairOverride>& overrides = {}) {
         sph::Domain d;

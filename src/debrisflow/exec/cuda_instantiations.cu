@@ -53,8 +53,8 @@ struct DemContacts {
             const Vec3 r = si.x - sj.x;
             const Real d2 = dot(r, r), rs = si.r + sj.r;
             if (d2 >= rs * rs) continue;
-            const auto c = dem::grain_pair_force(table(si.material, sj.material), si, sj, r, d2,
-                                                 dt, history[s]);
+            const auto c = dem::grain_pair_force(table(si.material, sj.material), si, sj, r, d2, dt,
+                                                 history[s]);
             f += c.force_i;
             t += c.torque_i;
         }
