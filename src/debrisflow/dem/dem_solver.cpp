@@ -231,15 +231,6 @@ void DemSolver::forces(Real half_kick) {
     const auto& prims = walls_.primitives();
     auto& wl = walls_.walls();
     const std::size_t nw = wl.size();
-    std::vector<std::uint8_t> active(nw);
-    std::vector<int> wall_mat(nw);
-    std::vector<Vec3> wall_vel(nw), wall_org(nw);
-    for (std::size_t w = 0; w < nw; ++w) {
-        active[w] = wl[w].active;
-        wall_mat[w] = wl[w].material;
-        wall_vel[w] = wl[w].velocity;
-        wall_org[w] = wl[w].origin;
-    }
     std::vector<Real> wall_sum(6 * nw, 0);
     const Index wcap = wall_slots_.capacity();
     const Index* wp = wall_slots_.partners();
@@ -271,7 +262,7 @@ void DemSolver::forces(Real half_kick) {
                 for (Index k = 0; k < cw; ++k) {
                     const Index pidx = wp[base + std::size_t(k)];
                     const WallPrimitive& pr = prims[std::size_t(pidx)];
-                    if (!active[std::size_t(pr.wall)]) {
+                    if (!wl[std::size_t(pr.wall)].active) {
                         wh[base + std::size_t(k)] = ContactHistory{};
                         continue;
                     }
@@ -292,13 +283,13 @@ void DemSolver::forces(Real half_kick) {
                         continue;
                     }
                     const std::size_t w = std::size_t(pr.wall);
-                    const int mw = wall_mat[w] < 0 ? si.material : wall_mat[w];
+                    const int mw = wl[w].material < 0 ? si.material : wl[w].material;
                     const WallContactForce c2 =
                         wall_contact_force(table(si.material, mw), si, pr, cand.q[c], cand.d[c],
-                                           wall_vel[w], h_contact, wh[base + std::size_t(k)]);
+                                           wl[w].velocity, h_contact, wh[base + std::size_t(k)]);
                     f += c2.force;
                     t += c2.torque;
-                    const Vec3 m = cross(cand.q[c] - wall_org[w], -c2.force) - c2.mroll;
+                    const Vec3 m = cross(cand.q[c] - wl[w].origin, -c2.force) - c2.mroll;
                     Real* ws = local.data() + 6 * w;
                     ws[0] -= c2.force.x, ws[1] -= c2.force.y, ws[2] -= c2.force.z;
                     ws[3] += m.x, ws[4] += m.y, ws[5] += m.z;
@@ -339,7 +330,6 @@ void DemSolver::step(Real h) {
         ScopedTimer timer(t_forces_);
         forces(Real(0.5) * h);
     }
-    t_ += h;
 }
 
 void DemSolver::advance(Real dt) {

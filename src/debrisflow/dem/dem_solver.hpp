@@ -41,7 +41,6 @@ public:
     // The largest step accepted from the user (0.2 x shortest contact time, 0.2 Rayleigh time).
     time::DtLimit stability_dt() const { return stability_dt_; }
     Real dt() const { return dt_; }
-    Real time() const { return t_; }
     // Rebuilds neighbour lists now (reordering grains by cell when params.reorder), keeping
     // the contact history; normally triggered by the accumulated drift.
     void rebuild_now() { rebuild(); }
@@ -86,7 +85,7 @@ private:
     // Interleaved copy of the state the contact loop reads (one 96-byte record per grain
     // instead of twelve arrays), written by the drift; the GrainSet stays the master copy.
     std::vector<GrainState> hot_;
-    Real max_radius_ = 0, skin_ = 0, drift_ = 0, t_ = 0, dt_ = 0;
+    Real max_radius_ = 0, skin_ = 0, drift_ = 0, dt_ = 0;
     Real current_h_ = 0; // size of the step being taken (tangential spring increment)
     time::DtLimit auto_dt_{0, ""}, stability_dt_{0, ""};
     bool built_ = false, bad_ = false;
