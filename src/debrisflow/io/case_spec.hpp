@@ -3,6 +3,7 @@
 #include "debrisflow/dem/materials.hpp"
 #include "debrisflow/sph/sph_params.hpp"
 #include "debrisflow/sph/sph_solver.hpp"
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -76,10 +77,53 @@ struct DemSpec {
     std::vector<GrainsSpec> grains;
 };
 
+// A rigid body: shape (box, sphere, cylinder, stl, clump of spheres), material (a DEM
+// [[material]] name: density and contact parameters), mass properties from the geometry or
+// prescribed, motion (free, fixed, prescribed velocity tables), locked world DOFs.
+struct BodySpec {
+    std::string name, material;
+    std::string motion = "free"; // free | fixed | prescribed
+    ShapeSpec shape;             // type box | sphere | cylinder | stl | clump
+    std::vector<Vec3> clump_centers;
+    std::vector<Real> clump_radii;
+    Real density = 0;                           // [kg/m^3]; 0: the material's
+    std::optional<Real> mass;                   // [kg] (2D: per metre of thickness)
+    std::optional<Vec3> com_offset;             // centre of mass minus geometric centroid [m]
+    std::optional<std::array<Real, 6>> inertia; // about the CoM: xx, yy, zz, xy, xz, yz
+    Vec3 velocity, angular_velocity;            // initial (free) or constant (prescribed)
+    std::vector<Real> motion_times;             // prescribed: piecewise-linear tables
+    std::vector<Vec3> motion_velocity, motion_angular_velocity;
+    std::array<bool, 3> lock_translation{false, false, false};
+    std::array<bool, 3> lock_rotation{false, false, false};
+    std::optional<Vec3> track_point; // a named point reported by the body probe (world, t=0)
+    Real contact_radius = 0;         // Hertz curvature radius at vertices [m] (0: automatic)
+    int layers = 0;                  // SPH boundary layers sampled inside the surface
+};
+
+// A constraint between two bodies, or a body and the ground (body_b empty): hinge (revolute
+// about axis through point), ball (spherical joint at point), fixed (welded at point) or spring
+// (linear spring-damper between point on a and point_b on b).
+struct JointSpec {
+    std::string name, type, body_a, body_b;
+    Vec3 point, point_b, axis{0, 1, 0};
+    Real stiffness = 0, damping = 0;
+    std::optional<Real> rest_length;
+};
+
+struct RigidSpec {
+    Real dt = 0;                    // time step when the case has neither fluid nor grains
+    Real contact_spacing = 0;       // distributed-contact sphere spacing (default dp)
+    int joint_iterations = 30;      // Gauss-Seidel sweeps over the joints
+    Real joint_stabilization = 0.2; // Baumgarte factor of the position error fed back per step
+    std::vector<BodySpec> bodies;
+    std::vector<JointSpec> joints;
+};
+
 struct ProbeSpec {
     std::string name;
     std::string type; // pressure, gauge, velocity, front, wall_force, section,
-                      // kinetic_energy, runup, mass_flux
+                      // kinetic_energy, runup, mass_flux, body
+    std::string body; // body: the body tracked
     Vec3 position;
     std::string wall;
     int axis = 0;
@@ -107,6 +151,8 @@ struct CaseSpec {
     bool has_dem = false;
     DemSpec dem;
     std::vector<WallSpec> walls;
+    RigidSpec rigid;
+    bool has_bodies() const { return !rigid.bodies.empty(); }
     std::vector<ProbeSpec> probes;
     std::string resolved_toml; // the case after --set overrides, for the output folder
 };

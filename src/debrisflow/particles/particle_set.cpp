@@ -45,9 +45,11 @@ void ParticleSet::add(Vec3 pos, Vec3 vel, Real density, Real m, Kind k, std::int
     kind.push_back(std::uint8_t(k));
     group.push_back(grp);
     id.push_back(next_id_++);
+    ++layout_version_;
 }
 
 void ParticleSet::permute(const std::vector<Index>& perm) {
+    ++layout_version_;
     for_each_field(*this, [&](auto& field) {
         using V = std::decay_t<decltype(field)>;
         V out(field.size());
@@ -59,6 +61,7 @@ void ParticleSet::permute(const std::vector<Index>& perm) {
 }
 
 void ParticleSet::compact(const std::vector<std::uint8_t>& keep) {
+    ++layout_version_;
     for_each_field(*this, [&](auto& field) {
         std::size_t w = 0;
         for (std::size_t i = 0; i < field.size(); ++i)

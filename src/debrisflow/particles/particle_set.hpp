@@ -51,8 +51,11 @@ public:
     void compact(const std::vector<std::uint8_t>& keep);
 
     ParticleView view();
+    // Changes whenever particles are added, reordered or removed (indices become stale).
+    std::uint64_t layout_version() const { return layout_version_; }
 
 private:
+    std::uint64_t layout_version_ = 0;
     ParticleId next_id_ = 0;
 };
 

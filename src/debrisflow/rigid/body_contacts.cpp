@@ -1,0 +1,190 @@
+#include "debrisflow/rigid/body_contacts.hpp"
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+namespace debrisflow::rigid {
+
+namespace {
+
+// Deepest contact of a sphere (radius r >= 0; r = 0: a vertex) at p with a wall primitive.
+// `inside` is a point of the body, which tells a vertex which side of a triangle it is on.
+bool touch(const dem::WallPrimitive& w, Vec3 p, Real r, Vec3 inside, Real reach, Vec3& n,
+           Real& delta) {
+    if (w.type == dem::PrimitiveType::plane) {
+        const Real s = dot(p - w.a, w.n);
+        if (s >= r) return false;
+        n = w.n;
+        delta = r - s;
+        return true;
+    }
+    if (r > 0) {
+        const Vec3 q = dem::closest_on_triangle(p, w.a, w.b, w.c);
+        const Vec3 d = p - q;
+        const Real dist = norm(d);
+        if (dist >= r || dist == 0) return false;
+        n = (1 / dist) * d;
+        delta = r - dist;
+        return true;
+    }
+    const Vec3 side = dot(inside - w.a, w.n) >= 0 ? w.n : -w.n;
+    const Real s = dot(p - w.a, side);
+    if (s >= 0 || s < -reach) return false;
+    const Vec3 foot = p - s * side;
+    const Vec3 q = dem::closest_on_triangle(foot, w.a, w.b, w.c);
+    if (dot(q - foot, q - foot) > Real(1e-18) + Real(1e-12) * reach * reach) return false;
+    n = side;
+    delta = -s;
+    return true;
+}
+
+std::uint64_t key(std::uint64_t a, std::uint64_t b, std::uint64_t c) {
+    return (a << 40) ^ (b << 16) ^ c;
+}
+
+} // namespace
+
+void BodyContacts::add(const dem::PairParams& p, const Hit& h, const BodyState& a,
+                       const BodyState* b, Vec3 wall_velocity, Real r_eff, Real m_eff,
+                       BodyLoads& la, BodyLoads* lb, dem::ContactHistory& hist, Real elapsed) {
+    const Vec3 vb = b ? b->point_velocity(h.point) : wall_velocity;
+    const Vec3 vrel = a.point_velocity(h.point) - vb;
+    const Vec3 wrel = a.omega() - (b ? b->omega() : Vec3{});
+    const auto res = dem::resolve_contact(p, h.delta, h.n, vrel, wrel, r_eff, m_eff, elapsed, hist);
+    la.contact_force += res.force;
+    la.contact_torque += cross(h.point - a.pos, res.force);
+    if (lb) {
+        lb->contact_force -= res.force;
+        lb->contact_torque -= cross(h.point - b->pos, res.force);
+    }
+    // Stiffness over mass of this contact, for the time step: k = 1.5 F_n / delta (Hertz).
+    if (h.delta > 0 && m_eff > 0)
+        max_rate_ = std::max(max_rate_, Real(1.5) * res.fn / h.delta / m_eff);
+    ++contacts_;
+}
+
+Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<BodyModel>& m,
+                           const dem::WallSet* walls, std::vector<BodyLoads>& loads, Real elapsed,
+                           bool commit) {
+    contacts_ = 0;
+    max_rate_ = 0;
+    std::unordered_map<std::uint64_t, dem::ContactHistory> wall_next, body_next;
+    // Body-wall: vertices and exact spheres against every active primitive.
+    if (walls && !walls->empty()) {
+        const auto& prims = walls->primitives();
+        const auto& wl = walls->walls();
+        for (std::size_t bi = 0; bi < s.size(); ++bi) {
+            const BodyState& b = s[bi];
+            if (b.motion != Motion::free) continue;
+            const BodyModel& model = m[bi];
+            const std::size_t nf = model.vertices.size() + model.spheres.size();
+            for (std::size_t f = 0; f < nf; ++f) {
+                const bool vertex = f < model.vertices.size();
+                const BodySphere sp = vertex ? BodySphere{model.vertices[f], 0}
+                                             : model.spheres[f - model.vertices.size()];
+                const Vec3 p = b.to_world(sp.center);
+                const Real reach = std::max(b.contact_radius, sp.radius);
+                // deepest hit per wall
+                std::vector<std::tuple<int, Hit>> best;
+                for (const auto& w : prims) {
+                    if (!wl[w.wall].active) continue;
+                    Vec3 n;
+                    Real delta;
+                    if (!touch(w, p, sp.radius, b.pos, reach, n, delta)) continue;
+                    const Hit h{delta, n, p - (sp.radius - Real(0.5) * delta) * n};
+                    auto it = std::find_if(best.begin(), best.end(),
+                                           [&](const auto& e) { return std::get<0>(e) == w.wall; });
+                    if (it == best.end())
+                        best.emplace_back(w.wall, h);
+                    else if (delta > std::get<1>(*it).delta)
+                        std::get<1>(*it) = h;
+                }
+                for (const auto& [wall, h] : best) {
+                    const int wm = wl[wall].material >= 0 ? wl[wall].material : b.material;
+                    const auto k = key(bi, f, std::uint64_t(wall));
+                    auto it = wall_hist_.find(k);
+                    dem::ContactHistory hist =
+                        it != wall_hist_.end() ? it->second : dem::ContactHistory{};
+                    add(pair(b.material, wm), h, b, nullptr, wl[wall].velocity,
+                        vertex ? b.contact_radius : sp.radius, b.mass, loads[bi], nullptr, hist,
+                        elapsed);
+                    wall_next[k] = hist;
+                }
+            }
+        }
+    }
+    // Body-body: sample spheres of different bodies, hashed on a grid.
+    Real rmax = 0;
+    std::size_t total = 0;
+    for (const auto& model : m) {
+        total += model.samples.size();
+        for (const auto& sp : model.samples) rmax = std::max(rmax, sp.radius);
+    }
+    if (s.size() > 1 && total > 0) {
+        const Real cell = 2 * rmax;
+        struct Sample {
+            Vec3 x;
+            Real r;
+            int body;
+            std::uint32_t id;
+        };
+        std::vector<Sample> pts;
+        pts.reserve(total);
+        std::uint32_t id = 0;
+        for (std::size_t bi = 0; bi < s.size(); ++bi)
+            for (const auto& sp : m[bi].samples)
+                pts.push_back({s[bi].to_world(sp.center), sp.radius, int(bi), id++});
+        auto cell_of = [&](Vec3 x) {
+            return std::tuple<long, long, long>{long(std::floor(x.x / cell)),
+                                                long(std::floor(x.y / cell)),
+                                                long(std::floor(x.z / cell))};
+        };
+        auto hash = [](const std::tuple<long, long, long>& c) {
+            return std::uint64_t(std::get<0>(c)) * 73856093u ^
+                   std::uint64_t(std::get<1>(c)) * 19349663u ^
+                   std::uint64_t(std::get<2>(c)) * 83492791u;
+        };
+        std::unordered_multimap<std::uint64_t, std::uint32_t> grid;
+        grid.reserve(pts.size());
+        for (const auto& p : pts) grid.emplace(hash(cell_of(p.x)), p.id);
+        for (const auto& a : pts) {
+            const auto [cx, cy, cz] = cell_of(a.x);
+            for (long dz = -1; dz <= 1; ++dz)
+                for (long dy = -1; dy <= 1; ++dy)
+                    for (long dx = -1; dx <= 1; ++dx) {
+                        const std::tuple<long, long, long> c{cx + dx, cy + dy, cz + dz};
+                        auto [lo, hi] = grid.equal_range(hash(c));
+                        for (auto it = lo; it != hi; ++it) {
+                            const Sample& b = pts[it->second];
+                            if (b.body <= a.body) continue;
+                            if (cell_of(b.x) != c) continue; // hash collision
+                            const BodyState &A = s[a.body], &B = s[b.body];
+                            if (A.motion != Motion::free && B.motion != Motion::free) continue;
+                            const Vec3 d = a.x - b.x;
+                            const Real dist = norm(d);
+                            const Real delta = a.r + b.r - dist;
+                            if (delta <= 0 || dist == 0) continue;
+                            const Vec3 n = (1 / dist) * d;
+                            const Hit h{delta, n, b.x + (b.r - Real(0.5) * delta) * n};
+                            const Real m_eff = A.inv_mass + B.inv_mass > 0
+                                                   ? 1 / (A.inv_mass + B.inv_mass)
+                                                   : A.mass;
+                            const auto k = (std::uint64_t(a.id) << 32) | b.id;
+                            auto hit = body_hist_.find(k);
+                            dem::ContactHistory hist =
+                                hit != body_hist_.end() ? hit->second : dem::ContactHistory{};
+                            add(pair(A.material, B.material), h, A, &B, {}, a.r * b.r / (a.r + b.r),
+                                m_eff, loads[a.body], &loads[b.body], hist, elapsed);
+                            body_next[k] = hist;
+                        }
+                    }
+        }
+    }
+    if (commit) {
+        wall_hist_.swap(wall_next);
+        body_hist_.swap(body_next);
+    }
+    return max_rate_;
+}
+
+} // namespace debrisflow::rigid

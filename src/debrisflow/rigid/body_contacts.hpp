@@ -1,0 +1,49 @@
+#pragma once
+#include "debrisflow/dem/contact_force_k.hpp"
+#include "debrisflow/dem/wall_set.hpp"
+#include "debrisflow/rigid/body_model.hpp"
+#include "debrisflow/rigid/body_state.hpp"
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+namespace debrisflow::rigid {
+
+// Contacts of rigid bodies with the DEM contact laws (dem::resolve_contact):
+//  - smooth, geometry-exact body-wall contact: every contact vertex (Hertz radius
+//    BodyState::contact_radius) and exact sphere of a body against the planes and triangles of
+//    the geometric walls; one contact per feature and wall (the deepest), so a face resting on
+//    a plane pushes at its corners whatever the SPH resolution;
+//  - distributed body-body contact between the surface sample spheres of different bodies
+//    (Canelas et al. 2017: each pair of touching samples is one contact of the two bodies).
+// Tangential history is kept per contact; evaluations inside a step use the history of the
+// step's start plus the time elapsed, and the end-of-step evaluation commits it.
+class BodyContacts {
+public:
+    BodyContacts(std::vector<dem::PairParams> table, int materials)
+        : table_(std::move(table)), materials_(materials) {}
+
+    // Adds contact loads; returns the largest contact stiffness over mass (1/s^2) seen.
+    Real compute(const std::vector<BodyState>& s, const std::vector<BodyModel>& m,
+                 const dem::WallSet* walls, std::vector<BodyLoads>& loads, Real elapsed,
+                 bool commit);
+    long contacts() const { return contacts_; }
+
+private:
+    struct Hit {
+        Real delta;
+        Vec3 n, point;
+    };
+    void add(const dem::PairParams& p, const Hit& h, const BodyState& a, const BodyState* b,
+             Vec3 wall_velocity, Real r_eff, Real m_eff, BodyLoads& la, BodyLoads* lb,
+             dem::ContactHistory& hist, Real elapsed);
+    const dem::PairParams& pair(int a, int b) const { return table_[a * materials_ + b]; }
+
+    std::vector<dem::PairParams> table_;
+    int materials_;
+    std::unordered_map<std::uint64_t, dem::ContactHistory> wall_hist_, body_hist_;
+    long contacts_ = 0;
+    Real max_rate_ = 0;
+};
+
+} // namespace debrisflow::rigid

@@ -1,0 +1,253 @@
+#include "debrisflow/rigid/body_solver.hpp"
+#include "debrisflow/core/error.hpp"
+#include "debrisflow/core/stopwatch.hpp"
+#include "debrisflow/exec/parallel.hpp"
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+
+namespace debrisflow::rigid {
+
+BodySolver::BodySolver(RigidParams params, std::vector<BodyState> bodies,
+                       std::vector<BodyModel> models, JointSet joints, BodyContacts contacts,
+                       const dem::WallSet* walls)
+    : params_(params), bodies_(std::move(bodies)), models_(std::move(models)),
+      loads_(bodies_.size()), joints_(std::move(joints)), contacts_(std::move(contacts)),
+      walls_(walls) {
+    for (auto& b : bodies_) apply_locks(b);
+}
+
+void BodySolver::attach_particles(particles::ParticleSet* set, BodyParticles particles) {
+    set_ = set;
+    particles_ = std::move(particles);
+    layout_seen_ = ~std::uint64_t(0);
+    refresh_members();
+}
+
+int BodySolver::find(const std::string& name) const {
+    for (std::size_t b = 0; b < models_.size(); ++b)
+        if (models_[b].name == name) return int(b);
+    return -1;
+}
+
+void BodySolver::refresh_members() {
+    if (!set_ || set_->layout_version() == layout_seen_) return;
+    layout_seen_ = set_->layout_version();
+    members_.clear();
+    const ParticleId lo = particles_.first_id, hi = lo + particles_.owner.size();
+    for (Index i = 0; i < set_->size(); ++i)
+        if (set_->id[i] >= lo && set_->id[i] < hi) members_.push_back(i);
+}
+
+void BodySolver::move_particles(bool positions) {
+    if (!set_) return;
+    refresh_members();
+    auto pv = set_->view();
+    const Index* mem = members_.data();
+    const ParticleId* ids = set_->id.data();
+    const ParticleId first = particles_.first_id;
+    const std::int32_t* owner = particles_.owner.data();
+    const Vec3 *off = particles_.offset.data(), *nrm = particles_.normal.data();
+    const BodyState* bs = bodies_.data();
+    exec::for_each(Index(members_.size()), [=](Index k) {
+        const Index i = mem[k];
+        const std::size_t r = std::size_t(ids[i] - first);
+        const BodyState& b = bs[owner[r]];
+        const Vec3 arm = rotate(b.q, off[r]);
+        if (positions) {
+            pv.x[i] = b.pos.x + arm.x;
+            pv.y[i] = b.pos.y + arm.y;
+            pv.z[i] = b.pos.z + arm.z;
+            const Vec3 n = rotate(b.q, nrm[r]);
+            pv.wnx[i] = -n.x, pv.wny[i] = -n.y, pv.wnz[i] = -n.z; // into the fluid
+        }
+        const Vec3 v = b.vel + cross(b.omega(), arm);
+        pv.vx[i] = v.x, pv.vy[i] = v.y, pv.vz[i] = v.z;
+    });
+}
+
+void BodySolver::update_neighbors(bool) {
+    refresh_members();
+}
+
+Vec3 BodySolver::total_force(int b) const {
+    const BodyLoads& l = loads_[b];
+    return l.fluid_force + l.contact_force + l.joint_force + bodies_[b].mass * params_.gravity;
+}
+
+Vec3 BodySolver::total_torque(int b) const {
+    const BodyLoads& l = loads_[b];
+    return l.fluid_torque + l.contact_torque + l.joint_torque;
+}
+
+void BodySolver::compute_forces() {
+    ScopedTimer timer(t_forces_);
+    for (auto& l : loads_) l = {};
+    if (set_) {
+        refresh_members();
+        const ParticleId first = particles_.first_id;
+        for (Index i : members_) {
+            const std::size_t r = std::size_t(set_->id[i] - first);
+            const int b = particles_.owner[r];
+            const Vec3 f = set_->mass[i] * Vec3{set_->ax[i], set_->ay[i], set_->az[i]};
+            const Vec3 x{set_->x[i], set_->y[i], set_->z[i]};
+            loads_[b].fluid_force += f;
+            loads_[b].fluid_torque += cross(x - bodies_[b].pos, f);
+        }
+    }
+    max_contact_rate_ = contacts_.compute(bodies_, models_, walls_, loads_, elapsed_, commit_next_);
+    joints_.add_spring_loads(bodies_, loads_);
+    if (pending_kick_ > 0) {
+        const Real h = pending_kick_;
+        pending_kick_ = 0;
+        kick(Real(0.5) * h);
+        constrain(h);
+        move_particles(false);
+    }
+}
+
+void BodySolver::kick(Real h) {
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        BodyState& s = bodies_[b];
+        if (s.motion != Motion::free) continue;
+        s.vel += (h * s.inv_mass) * total_force(int(b));
+        s.ang_mom += h * total_torque(int(b));
+        apply_locks(s);
+    }
+}
+
+void BodySolver::drift(Real h, Real t_mid) {
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        BodyState& s = bodies_[b];
+        if (s.motion == Motion::fixed) continue;
+        if (s.motion == Motion::prescribed) {
+            const BodyModel& m = models_[b];
+            if (!m.times.empty()) {
+                s.vel = interpolate(m.times, m.velocity, t_mid);
+                s.prescribed_omega = interpolate(m.times, m.angular_velocity, t_mid);
+            }
+            s.pos += h * s.vel;
+            s.q = normalized(from_rotation_vector(h * s.prescribed_omega) * s.q);
+            continue;
+        }
+        s.pos += h * s.vel;
+        free_rotation(s.q, s.ang_mom, s.inv_inertia, h);
+    }
+}
+
+void BodySolver::constrain(Real dt) {
+    if (!joints_.empty())
+        joints_.project(bodies_, dt, params_.joint_iterations, params_.joint_stabilization);
+    for (auto& b : bodies_) apply_locks(b);
+}
+
+void BodySolver::predictor(Real dt) {
+    ScopedTimer timer(t_integrate_);
+    saved_ = bodies_;
+    saved_t_ = t_;
+    // x_n+1/2 = x_n + dt/2 v_n, v_n+1/2 = v_n + dt/2 a_n (as the SPH predictor)
+    drift(Real(0.5) * dt, t_ + Real(0.25) * dt);
+    kick(Real(0.5) * dt);
+    constrain(Real(0.5) * dt);
+    move_particles(true);
+    elapsed_ = Real(0.5) * dt;
+    commit_next_ = false;
+}
+
+void BodySolver::corrector(Real dt) {
+    ScopedTimer timer(t_integrate_);
+    // Kick (dt/2), free rotation (dt), kick (dt/2) with the mid-step loads, from the state at
+    // t_n; x_n+1 = x_n + dt (v_n + v_n+1)/2.
+    bodies_ = saved_;
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        BodyState& s = bodies_[b];
+        if (s.motion == Motion::fixed) continue;
+        if (s.motion == Motion::prescribed) { // moves with its mid-step velocity
+            const BodyModel& m = models_[b];
+            if (!m.times.empty()) {
+                s.vel = interpolate(m.times, m.velocity, t_ + Real(0.5) * dt);
+                s.prescribed_omega = interpolate(m.times, m.angular_velocity, t_ + Real(0.5) * dt);
+            }
+            s.pos += dt * s.vel;
+            s.q = normalized(from_rotation_vector(dt * s.prescribed_omega) * s.q);
+            continue;
+        }
+        const Vec3 v0 = s.vel;
+        s.ang_mom += (Real(0.5) * dt) * total_torque(int(b));
+        apply_locks(s);
+        free_rotation(s.q, s.ang_mom, s.inv_inertia, dt);
+        s.ang_mom += (Real(0.5) * dt) * total_torque(int(b));
+        s.vel += (dt * s.inv_mass) * total_force(int(b));
+        apply_locks(s);
+        s.pos += (Real(0.5) * dt) * (v0 + s.vel);
+    }
+    constrain(dt);
+    t_ = saved_t_ + dt;
+    move_particles(true);
+    elapsed_ = dt;
+    commit_next_ = true;
+}
+
+void BodySolver::verlet_step(Real dt, bool) {
+    ScopedTimer timer(t_integrate_);
+    kick(Real(0.5) * dt);
+    constrain(dt);
+    drift(dt, t_ + Real(0.5) * dt);
+    t_ += dt;
+    pending_kick_ = dt;
+    move_particles(true);
+    elapsed_ = dt;
+    commit_next_ = true;
+}
+
+void BodySolver::step(Real dt) {
+    verlet_step(dt, false);
+    compute_forces();
+}
+
+time::DtLimit BodySolver::stable_dt() const {
+    time::DtLimit lim{std::numeric_limits<Real>::max(), "none"};
+    if (params_.dt > 0) lim = {params_.dt, "user dt"};
+    if (max_contact_rate_ > 0) {
+        const Real dtc = Real(0.2) * 3.14159265358979 / std::sqrt(max_contact_rate_);
+        if (dtc < lim.dt) lim = {dtc, "contact"};
+    }
+    const Real dts = joints_.stable_dt(bodies_);
+    if (dts < lim.dt) lim = {dts, "spring"};
+    return lim;
+}
+
+void BodySolver::check_health(Real t) const {
+    const auto& d = params_.domain;
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        const BodyState& s = bodies_[b];
+        const Real vals[] = {s.pos.x, s.pos.y,     s.pos.z,     s.vel.x,     s.vel.y,
+                             s.vel.z, s.ang_mom.x, s.ang_mom.y, s.ang_mom.z, s.q.w};
+        bool finite = true;
+        for (Real v : vals) finite = finite && std::isfinite(v);
+        bool inside = true;
+        for (int k = 0; k < 3 && finite; ++k)
+            if (!(params_.dim == 2 && k == 1) && !d.periodic[k] &&
+                (s.pos[k] < d.lo[k] || s.pos[k] > d.hi[k]))
+                inside = false;
+        if (finite && inside) continue;
+        throw InstabilityError(fmt::format(
+            "{} at t = {:.6g} s: body '{}' at ({:.4g}, {:.4g}, {:.4g}) m, velocity ({:.4g}, "
+            "{:.4g}, {:.4g}) m/s",
+            finite ? "body left the domain" : "non-finite body state (NaN/Inf)", t, models_[b].name,
+            s.pos.x, s.pos.y, s.pos.z, s.vel.x, s.vel.y, s.vel.z));
+    }
+}
+
+void BodySolver::add_timings(time::Timings& t) const {
+    t.forces += t_forces_;
+    t.integration += t_integrate_;
+}
+
+Real BodySolver::kinetic_energy(int b) const {
+    const BodyState& s = bodies_[b];
+    const Vec3 w = s.omega();
+    return Real(0.5) * s.mass * dot(s.vel, s.vel) + Real(0.5) * dot(w, s.ang_mom);
+}
+
+} // namespace debrisflow::rigid

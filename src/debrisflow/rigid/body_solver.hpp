@@ -1,0 +1,96 @@
+#pragma once
+#include "debrisflow/particles/particle_set.hpp"
+#include "debrisflow/rigid/body_contacts.hpp"
+#include "debrisflow/rigid/joints.hpp"
+#include "debrisflow/sph/sph_solver.hpp"
+#include "debrisflow/time/phase.hpp"
+#include <memory>
+#include <vector>
+
+namespace debrisflow::rigid {
+
+struct RigidParams {
+    Vec3 gravity{0, 0, -9.81};
+    Real dt = 0; // user step (0: limited by contacts and springs only)
+    int joint_iterations = 30;
+    Real joint_stabilization = 0.2;
+    int dim = 3;
+    sph::Domain domain;
+};
+
+// SPH boundary particles that move with the bodies, addressed by persistent particle id:
+// particle id first_id + k belongs to body owner[k] at body-frame offset offset[k], with the
+// body-frame wall normal normal[k] (for the no-slip extrapolation).
+struct BodyParticles {
+    ParticleId first_id = 0;
+    std::vector<std::int32_t> owner;
+    std::vector<Vec3> offset, normal;
+};
+
+// Six-degree-of-freedom rigid bodies as a phase of the time loop. Newton-Euler with the
+// translation as in the SPH scheme, the rotation by kick / torque-free split rotation / kick
+// (Dullweber et al. 1997) on the world angular momentum and a unit quaternion. Fluid loads
+// are the summed SPH accelerations of the bodies' boundary particles, F = sum m_k a_k,
+// T = sum (x_k - X) x m_k a_k (DualSPHysics floating bodies, Dominguez et al. 2022 eqs.
+// 31-32); the phase must be added after the SPH phase. Contacts and springs add their loads;
+// joints constrain velocities after every velocity update.
+class BodySolver : public time::Phase {
+public:
+    BodySolver(RigidParams params, std::vector<BodyState> bodies, std::vector<BodyModel> models,
+               JointSet joints, BodyContacts contacts, const dem::WallSet* walls);
+    // Couples the bodies to the fluid through their boundary particles in `set`.
+    void attach_particles(particles::ParticleSet* set, BodyParticles particles);
+
+    const char* name() const override { return "rigid"; }
+    void update_neighbors(bool reorder) override;
+    void compute_forces() override;
+    void predictor(Real dt) override;
+    void corrector(Real dt) override;
+    void verlet_step(Real dt, bool euler) override;
+    time::DtLimit stable_dt() const override;
+    void check_health(Real t) const override;
+    void add_timings(time::Timings& t) const override;
+
+    // A velocity-Verlet step on the bodies alone (tests, body-only runs).
+    void step(Real dt);
+
+    const std::vector<BodyState>& bodies() const { return bodies_; }
+    std::vector<BodyState>& bodies() { return bodies_; }
+    const std::vector<BodyModel>& models() const { return models_; }
+    const std::vector<BodyLoads>& loads() const { return loads_; }
+    const JointSet& joints() const { return joints_; }
+    int find(const std::string& name) const; // -1 if absent
+    long contacts() const { return contacts_.contacts(); }
+    Real time() const { return t_; }
+    // Kinetic energy and world angular momentum of body b (about its centre of mass).
+    Real kinetic_energy(int b) const;
+
+private:
+    void refresh_members();
+    void move_particles(bool positions);
+    void kick(Real h);              // v += h F/m, L += h T (free bodies)
+    void drift(Real h, Real t_mid); // x += h v, free rotation over h; prescribed motion
+    void constrain(Real dt);        // joints and locks
+    Vec3 total_force(int b) const;
+    Vec3 total_torque(int b) const;
+
+    RigidParams params_;
+    std::vector<BodyState> bodies_, saved_;
+    std::vector<BodyModel> models_;
+    std::vector<BodyLoads> loads_;
+    JointSet joints_;
+    BodyContacts contacts_;
+    const dem::WallSet* walls_;
+    particles::ParticleSet* set_ = nullptr;
+    BodyParticles particles_;
+    std::vector<Index> members_;
+    std::uint64_t layout_seen_ = ~std::uint64_t(0);
+    Real t_ = 0, saved_t_ = 0;
+    Real elapsed_ = 0;        // time since the contact history was committed
+    bool commit_next_ = true; // the next force evaluation ends a step
+    Real pending_kick_ = 0;   // velocity Verlet: second half kick still to apply
+    Real max_contact_rate_ = 0;
+    double t_forces_ = 0, t_integrate_ = 0;
+};
+
+} // namespace debrisflow::rigid
