@@ -45,6 +45,20 @@ int check(const std::string& file, const std::vector<std::string>& sets) {
                                  spec.dem.params.subcycle ? ", sub-cycled" : "");
         if (!spec.dem.params.subcycle && d.dt() < dt) dt = d.dt(), limiter = "dem";
     }
+    if (sim.has_bodies()) {
+        const auto& r = sim.bodies();
+        for (std::size_t b = 0; b < r.bodies().size(); ++b) {
+            const auto& s = r.bodies()[b];
+            std::cout << fmt::format("body '{}': {} motion, mass {:.6g} kg, centre of mass "
+                                     "({:.5g}, {:.5g}, {:.5g}) m, {} contact features, {} "
+                                     "contact samples\n",
+                                     r.models()[b].name, spec.rigid.bodies[b].motion, s.mass,
+                                     s.pos.x, s.pos.y, s.pos.z,
+                                     r.models()[b].vertices.size() + r.models()[b].spheres.size(),
+                                     r.models()[b].samples.size());
+        }
+        if (spec.rigid.dt > 0 && spec.rigid.dt < dt) dt = spec.rigid.dt, limiter = "rigid dt";
+    }
     std::cout << fmt::format("time step: {:.4g} s ({}); about {:.0f} steps to the end time\n", dt,
                              limiter, spec.t_end / dt);
     return 0;

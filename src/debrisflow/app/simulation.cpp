@@ -2,6 +2,7 @@
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/exec/parallel.hpp"
 #include "debrisflow/io/vtk_writer.hpp"
+#include "debrisflow/scenario/build_bodies.hpp"
 #include "debrisflow/scenario/build_grains.hpp"
 #include "debrisflow/scenario/build_particles.hpp"
 #include <chrono>
@@ -12,13 +13,19 @@
 namespace debrisflow::app {
 
 Simulation::Simulation(io::CaseSpec spec) : spec_(std::move(spec)) {
+    std::vector<scenario::BuiltBody> bodies;
+    if (spec_.has_bodies()) bodies = scenario::build_body_geometry(spec_);
+    ParticleId first_body_particle = 0;
     if (!spec_.fluids.empty()) {
-        scenario::build_particles(spec_, set_);
+        first_body_particle = scenario::build_particles(spec_, set_, bodies);
         solver_ = std::make_unique<sph::SphSolver>(spec_.sph, set_, spec_.domain);
     }
+    if (spec_.has_dem || spec_.has_bodies()) scenario::build_dem_walls(spec_, dem_walls_);
+    if (spec_.has_bodies())
+        rigid_ = scenario::make_body_solver(spec_, bodies, &dem_walls_, solver_ ? &set_ : nullptr,
+                                            first_body_particle);
     if (spec_.has_dem) {
         scenario::build_grains(spec_, grains_);
-        scenario::build_dem_walls(spec_, dem_walls_);
         dem_ = std::make_unique<dem::DemSolver>(spec_.dem.params, grains_, dem_walls_,
                                                 spec_.dem.materials, spec_.dem.overrides,
                                                 spec_.domain);
@@ -90,15 +97,17 @@ io::RunReport Simulation::run(const RunOptions& opt) {
     report.fluid = set_.count(particles::Kind::fluid);
     report.boundary = set_.count(particles::Kind::boundary);
     report.grains = grains_.size();
+    report.bodies = rigid_ ? long(rigid_->bodies().size()) : 0;
     if (solver_) report.initial_dt = solver_->initial_dt();
     if (dem_) {
         report.dem_dt = {dem_->dt(),
                          spec_.dem.params.dt > 0 ? "user dt" : dem_->automatic_dt().limiter};
         if (!solver_) report.initial_dt = report.dem_dt;
     }
+    if (rigid_ && !solver_ && !dem_) report.initial_dt = {spec_.rigid.dt, "rigid dt"};
     const bool files = !opt.out_dir.empty();
     log_.set_quiet(opt.quiet);
-    std::unique_ptr<io::VtkSeries> vtk, vtk_grains;
+    std::unique_ptr<io::VtkSeries> vtk, vtk_grains, vtk_bodies;
     if (files) {
         std::filesystem::create_directories(opt.out_dir);
         log_.open(opt.out_dir + "/log.txt");
@@ -107,6 +116,8 @@ io::RunReport Simulation::run(const RunOptions& opt) {
         if (spec_.vtk && solver_) vtk = std::make_unique<io::VtkSeries>(opt.out_dir + "/vtk");
         if (spec_.vtk && dem_)
             vtk_grains = std::make_unique<io::VtkSeries>(opt.out_dir + "/vtk", "grains");
+        if (spec_.vtk && rigid_)
+            vtk_bodies = std::make_unique<io::VtkSeries>(opt.out_dir + "/vtk", "bodies");
     }
     log_.line(fmt::format("debrisflow: case '{}' ({}), {}D, end time {} s", spec_.name, spec_.file,
                           spec_.dim, spec_.t_end));
@@ -124,6 +135,16 @@ io::RunReport Simulation::run(const RunOptions& opt) {
                               grains_.size(), grains_.total_mass(), dem_walls_.walls().size(),
                               dem_->dt(), report.dem_dt.limiter, dem_->automatic_dt().dt,
                               spec_.dem.params.subcycle ? ", sub-cycled inside the SPH step" : ""));
+    if (rigid_)
+        for (std::size_t b = 0; b < rigid_->bodies().size(); ++b) {
+            const auto& s = rigid_->bodies()[b];
+            log_.line(fmt::format("body '{}': {} motion, mass {:.6g} kg, centre of mass ({:.5g}, "
+                                  "{:.5g}, {:.5g}) m, principal moments ({:.5g}, {:.5g}, {:.5g}) "
+                                  "kg m^2",
+                                  rigid_->models()[b].name, spec_.rigid.bodies[b].motion, s.mass,
+                                  s.pos.x, s.pos.y, s.pos.z, 1 / s.inv_inertia.x,
+                                  1 / s.inv_inertia.y, 1 / s.inv_inertia.z));
+        }
     if (dem_ && spec_.dem.settle && !settled_ && t_ == 0) {
         try {
             settle_grains();
@@ -142,8 +163,10 @@ io::RunReport Simulation::run(const RunOptions& opt) {
     time::Integrator integ;
     if (solver_) integ.add_phase(solver_.get());
     if (dem_) integ.add_phase(dem_.get());
+    if (rigid_) integ.add_phase(rigid_.get()); // after SPH: it sums the fluid forces
     integ.set_reorder_every(solver_ ? spec_.sph.reorder_every : 1);
-    // A grains-only case takes one force evaluation per step (velocity Verlet inside the DEM).
+    // Cases without fluid take one force evaluation per step (velocity Verlet in the DEM and
+    // the rigid bodies).
     integ.set_scheme(spec_.scheme == "verlet" || !solver_ ? time::Scheme::verlet
                                                           : time::Scheme::symplectic,
                      spec_.verlet_euler_every);
@@ -155,6 +178,7 @@ io::RunReport Simulation::run(const RunOptions& opt) {
             if (*removed || s.t < at) return;
             if (solver_) solver_->remove_group(std::int16_t(w));
             if (dem_) dem_->remove_wall(int(w));
+            if (!dem_ && rigid_) dem_walls_.walls()[w].active = false;
             *removed = true;
             log_.line(fmt::format("t = {:.6g} s: wall '{}' removed", s.t, spec_.walls[w].name));
         });
@@ -173,6 +197,10 @@ io::RunReport Simulation::run(const RunOptions& opt) {
     if (vtk_grains)
         integ.add_observer(frames, [this, &vtk_grains](const time::StepInfo& s) {
             vtk_grains->write(grains_, s.t);
+        });
+    if (vtk_bodies)
+        integ.add_observer(frames, [this, &vtk_bodies](const time::StepInfo& s) {
+            write_bodies(*vtk_bodies, s.t);
         });
     const double particles = double(set_.size() + grains_.size());
     const auto wall0 = std::chrono::steady_clock::now();
@@ -197,6 +225,7 @@ io::RunReport Simulation::run(const RunOptions& opt) {
             report.pair_list_builds = solver_->list_builds();
             report.pairs = solver_->pair_list().pairs();
         }
+        if (rigid_) report.body_contacts = rigid_->contacts();
         if (dem_) {
             report.dem_contacts = dem_->contacts();
             report.dem_list_builds = dem_->list_builds();
@@ -234,6 +263,29 @@ io::RunReport Simulation::run(const RunOptions& opt) {
                   " (vtk/*.pvd for ParaView, probes/*.csv, summary.json, log.txt)");
     }
     return report;
+}
+
+void Simulation::write_bodies(io::VtkSeries& vtk, Real t) const {
+    std::vector<Vec3> x, v;
+    std::vector<float> r;
+    std::vector<std::int32_t> body;
+    const auto& states = rigid_->bodies();
+    const auto& models = rigid_->models();
+    for (std::size_t b = 0; b < states.size(); ++b) {
+        const auto& s = states[b];
+        auto add = [&](Vec3 local, Real radius) {
+            const Vec3 p = s.to_world(local);
+            x.push_back(p);
+            v.push_back(s.point_velocity(p));
+            r.push_back(float(radius));
+            body.push_back(std::int32_t(b));
+        };
+        for (const auto& sp : models[b].samples) add(sp.center, sp.radius);
+        if (models[b].samples.empty())
+            for (const auto& vx : models[b].vertices) add(vx, 0);
+        add({}, 0); // the centre of mass
+    }
+    vtk.write(x, v, r, body, t);
 }
 
 } // namespace debrisflow::app

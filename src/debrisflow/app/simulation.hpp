@@ -3,7 +3,9 @@
 #include "debrisflow/dem/dem_solver.hpp"
 #include "debrisflow/io/case_spec.hpp"
 #include "debrisflow/io/summary.hpp"
+#include "debrisflow/io/vtk_writer.hpp"
 #include "debrisflow/probes/probe.hpp"
+#include "debrisflow/rigid/body_solver.hpp"
 #include "debrisflow/sph/sph_solver.hpp"
 #include "debrisflow/time/integrator.hpp"
 #include <memory>
@@ -35,6 +37,8 @@ public:
     bool has_fluid() const { return solver_ != nullptr; }
     bool has_grains() const { return dem_ != nullptr; }
     dem::DemSolver& grains() { return *dem_; }
+    bool has_bodies() const { return rigid_ != nullptr; }
+    rigid::BodySolver& bodies() { return *rigid_; }
     const std::vector<std::unique_ptr<probes::Probe>>& probes() const { return probes_; }
     probes::Probe& probe(const std::string& name);
     // Memory held by particle data and neighbour lists, in bytes (estimate).
@@ -44,7 +48,10 @@ private:
     // Runs the DEM alone, gates closed, until PFC's equilibrium ratio (mean unbalanced force /
     // mean contact force) drops below dem.settle_ratio; then zeroes grain velocities.
     void settle_grains();
-    probes::ProbeContext probe_context() { return {solver_.get(), dem_.get()}; }
+    probes::ProbeContext probe_context() { return {solver_.get(), dem_.get(), rigid_.get()}; }
+    // World positions, velocities, radii and body index of the bodies' contact samples (or
+    // vertices) for the VTK output.
+    void write_bodies(io::VtkSeries& vtk, Real t) const;
 
     io::CaseSpec spec_;
     particles::ParticleSet set_;
@@ -52,6 +59,7 @@ private:
     dem::GrainSet grains_;
     dem::WallSet dem_walls_;
     std::unique_ptr<dem::DemSolver> dem_;
+    std::unique_ptr<rigid::BodySolver> rigid_;
     bool settled_ = false;
     std::vector<std::unique_ptr<probes::Probe>> probes_;
     Log log_;

@@ -2,8 +2,10 @@
 #include "debrisflow/io/case_spec.hpp"
 #include "debrisflow/io/config_table.hpp"
 #include "debrisflow/io/dem_reader.hpp"
+#include "debrisflow/io/rigid_reader.hpp"
 #include "debrisflow/kernels/kernel.hpp"
 #include "debrisflow/sph/sph_models.hpp"
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fmt/format.h>
@@ -112,7 +114,7 @@ ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
     ProbeSpec p;
     p.name = t.string("name");
     p.type = t.choice("type", {"pressure", "gauge", "velocity", "front", "wall_force", "section",
-                               "kinetic_energy", "runup", "mass_flux"});
+                               "kinetic_energy", "runup", "mass_flux", "body"});
     p.every = t.positive("every", 0.001);
     const bool fluid_probe =
         p.type == "pressure" || p.type == "velocity" || p.type == "gauge" || p.type == "front";
@@ -120,7 +122,12 @@ ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
     const bool grain_probe = p.type == "section" || p.type == "kinetic_energy" ||
                              p.type == "runup" || p.type == "mass_flux";
     if (grain_probe && !c.has_dem) t.fail("type", "a " + p.type + " probe needs [[grains]]");
-    if (p.type == "pressure" || p.type == "velocity" || p.type == "gauge") {
+    if (p.type == "body") {
+        p.body = t.string("body");
+        if (std::none_of(c.rigid.bodies.begin(), c.rigid.bodies.end(),
+                         [&](const auto& b) { return b.name == p.body; }))
+            t.fail("body", "no [[body]] named \"" + p.body + "\"");
+    } else if (p.type == "pressure" || p.type == "velocity" || p.type == "gauge") {
         p.position = t.vec3("position", c.dim);
     } else if (p.type == "section" || p.type == "kinetic_energy") {
         p.min = t.vec3("min", c.dim);
@@ -230,8 +237,9 @@ CaseSpec read_case(const std::string& path, const std::vector<std::string>& over
     }
     read_dem(root, c);
     c.dem.params.gravity = gravity;
-    if (c.fluids.empty() && !c.has_dem)
-        root.fail("fluid", "a case needs [[fluid]] or [[grains]] blocks");
+    read_rigid(root, c);
+    if (c.fluids.empty() && !c.has_dem && !c.has_bodies())
+        root.fail("fluid", "a case needs [[fluid]], [[grains]] or [[body]] blocks");
 
     const Real support = 2 * c.sph.h;
     for (const auto& t : root.tables("wall")) {
@@ -255,7 +263,7 @@ CaseSpec read_case(const std::string& path, const std::vector<std::string>& over
             w.layers = int(t.integer("layers", long(std::ceil(support / c.dp - 1e-9))));
             if (w.layers < 1) t.fail("layers", "must be >= 1");
         }
-        if (c.has_dem) {
+        if (c.has_dem || c.has_bodies()) {
             w.material = t.string("material", "");
             const auto& mats = c.dem.materials;
             if (!w.material.empty() && std::none_of(mats.begin(), mats.end(), [&](const auto& m) {

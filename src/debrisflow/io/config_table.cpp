@@ -147,6 +147,29 @@ std::vector<Real> ConfigTable::reals(const std::string& key) const {
     return out;
 }
 
+std::vector<std::vector<Real>> ConfigTable::rows(const std::string& key, std::size_t width) const {
+    const toml::node& n = require(key);
+    const toml::array* arr = n.as_array();
+    const std::string expect = fmt::format("expected an array of [{} numbers] rows", width);
+    if (!arr) fail(key, expect + ", found " + type_name(n));
+    std::vector<std::vector<Real>> out;
+    for (const auto& row : *arr) {
+        const toml::array* r = row.as_array();
+        if (!r || r->size() != width) fail(key, expect);
+        std::vector<Real> vals;
+        for (const auto& e : *r) {
+            if (auto v = e.value_exact<double>())
+                vals.push_back(Real(*v));
+            else if (auto w = e.value_exact<std::int64_t>())
+                vals.push_back(Real(*w));
+            else
+                fail(key, expect + "; found an element that is " + type_name(e));
+        }
+        out.push_back(vals);
+    }
+    return out;
+}
+
 std::vector<std::string> ConfigTable::strings(const std::string& key) const {
     const toml::node& n = require(key);
     const toml::array* arr = n.as_array();

@@ -33,6 +33,8 @@ public:
     Vec3 vec3(const std::string& key, int dim, Vec3 fallback) const;
     std::vector<Real> reals(const std::string& key) const;
     std::vector<std::string> strings(const std::string& key) const;
+    // An array of arrays of numbers (table rows), each row of `width` numbers.
+    std::vector<std::vector<Real>> rows(const std::string& key, std::size_t width) const;
 
     std::optional<ConfigTable> table(const std::string& key) const;
     std::vector<ConfigTable> tables(const std::string& key) const; // array of tables

@@ -53,6 +53,9 @@ void write_summary(const std::string& path, const CaseSpec& spec, const RunRepor
                          "\"neighbor_rebuilds\": {}}},\n",
                          num(r.dem_dt.dt), quoted(r.dem_dt.limiter), r.dem_contacts,
                          r.dem_list_builds);
+    if (r.bodies > 0)
+        o << fmt::format("  \"rigid\": {{\"bodies\": {}, \"contacts\": {}}},\n", r.bodies,
+                         r.body_contacts);
     const auto& t = res.timings;
     o << fmt::format("  \"timings\": {{\"neighbors\": {}, \"forces\": {}, \"integration\": {}, "
                      "\"output\": {}}},\n",

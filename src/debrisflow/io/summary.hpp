@@ -11,7 +11,8 @@ namespace debrisflow::io {
 struct RunReport {
     std::string status = "completed"; // completed | unstable
     std::string message;
-    long fluid = 0, boundary = 0, grains = 0;
+    long fluid = 0, boundary = 0, grains = 0, bodies = 0;
+    long body_contacts = 0;
     time::DtLimit dem_dt{0, ""};
     long dem_contacts = 0, dem_list_builds = 0;
     int threads = 1;

@@ -86,6 +86,23 @@ void VtkSeries::write(const dem::GrainSet& g, Real t) {
     write_frame(n, make_block("points", "Float32", 3, pos), point_data, "radius", t);
 }
 
+void VtkSeries::write(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
+                      const std::vector<float>& radius, const std::vector<std::int32_t>& body,
+                      Real t) {
+    const std::size_t n = x.size();
+    std::vector<float> pos(3 * n), vel(3 * n);
+    for (std::size_t i = 0; i < n; ++i)
+        for (int d = 0; d < 3; ++d) {
+            pos[3 * i + std::size_t(d)] = float(x[i][d]);
+            vel[3 * i + std::size_t(d)] = float(v[i][d]);
+        }
+    std::vector<Block> point_data;
+    point_data.push_back(make_block("velocity", "Float32", 3, vel));
+    point_data.push_back(make_block("radius", "Float32", 1, radius));
+    point_data.push_back(make_block("body", "Int32", 1, body));
+    write_frame(n, make_block("points", "Float32", 3, pos), point_data, "radius", t);
+}
+
 void VtkSeries::write_frame(std::size_t n, Block points, const std::vector<Block>& point_data,
                             const std::string& scalars, Real t) {
     std::vector<std::int32_t> conn(n), offs(n);

@@ -15,6 +15,9 @@ public:
     void write(const particles::ParticleSet& set, Real t);
     // Grain fields: velocity, angular_velocity, force, radius, material, id.
     void write(const dem::GrainSet& grains, Real t);
+    // Rigid-body surface points (contact samples, vertices): velocity, radius, body index.
+    void write(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
+               const std::vector<float>& radius, const std::vector<std::int32_t>& body, Real t);
     int frames() const { return int(entries_.size()); }
 
     struct Block {

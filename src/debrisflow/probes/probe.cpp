@@ -1,5 +1,6 @@
 #include "debrisflow/probes/probe.hpp"
 #include "debrisflow/core/error.hpp"
+#include "debrisflow/probes/body_probe.hpp"
 #include "debrisflow/probes/dem_probes.hpp"
 #include "debrisflow/probes/sph_probes.hpp"
 #include "debrisflow/probes/wall_force_probe.hpp"
@@ -60,6 +61,7 @@ std::unique_ptr<Probe> make_probe(const io::ProbeSpec& s, const io::CaseSpec& c)
     if (s.type == "section") return std::make_unique<SectionProbe>(s, c);
     if (s.type == "kinetic_energy") return std::make_unique<KineticEnergyProbe>(s);
     if (s.type == "mass_flux") return std::make_unique<MassFluxProbe>(s);
+    if (s.type == "body") return std::make_unique<BodyProbe>(s, c);
     for (std::size_t w = 0; w < c.walls.size(); ++w) {
         if (c.walls[w].name != s.wall) continue;
         if (s.type == "runup") return std::make_unique<RunupProbe>(s, int(w));

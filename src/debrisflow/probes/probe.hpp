@@ -9,13 +9,17 @@
 namespace debrisflow::dem {
 class DemSolver;
 }
+namespace debrisflow::rigid {
+class BodySolver;
+}
 
 namespace debrisflow::probes {
 
-// What a probe may look at: the fluid and/or the grains (null when the case has none).
+// What a probe may look at: the fluid, the grains, the rigid bodies (null when absent).
 struct ProbeContext {
     const sph::SphSolver* sph = nullptr;
     dem::DemSolver* dem = nullptr;
+    const rigid::BodySolver* rigid = nullptr;
 };
 
 // A measurement taken on a schedule and written to probes/<name>.csv (first column time [s]).

@@ -59,7 +59,7 @@ void BodySolver::move_particles(bool positions) {
             pv.y[i] = b.pos.y + arm.y;
             pv.z[i] = b.pos.z + arm.z;
             const Vec3 n = rotate(b.q, nrm[r]);
-            pv.wnx[i] = -n.x, pv.wny[i] = -n.y, pv.wnz[i] = -n.z; // into the fluid
+            pv.wnx[i] = n.x, pv.wny[i] = n.y, pv.wnz[i] = n.z; // into the fluid
         }
         const Vec3 v = b.vel + cross(b.omega(), arm);
         pv.vx[i] = v.x, pv.vy[i] = v.y, pv.vz[i] = v.z;

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <limits>
 #include <map>
+#include <memory>
 
 namespace debrisflow::scenario {
 
@@ -208,23 +209,19 @@ UnitProps unit_props(const ShapeField& f, int dim) {
 
 } // namespace
 
-bool body_contains(const io::BodySpec& spec, int dim, Vec3 p) {
-    TriangleMesh mesh;
-    if (spec.shape.type == "stl")
-        mesh = TriangleMesh::read_stl(spec.shape.file, spec.shape.scale, spec.shape.offset);
-    return ShapeField{spec, dim, &mesh}.inside(p);
-}
-
 BuiltBody build_body(const io::BodySpec& b, const io::CaseSpec& c, Real density, Real sph_dp,
                      int layers) {
     const int dim = c.dim;
-    TriangleMesh mesh;
+    auto mesh = std::make_shared<TriangleMesh>();
     if (b.shape.type == "stl")
-        mesh = TriangleMesh::read_stl(b.shape.file, b.shape.scale, b.shape.offset);
-    const ShapeField field{b, dim, &mesh};
+        *mesh = TriangleMesh::read_stl(b.shape.file, b.shape.scale, b.shape.offset);
+    const ShapeField field{b, dim, mesh.get()};
     const UnitProps u = unit_props(field, dim);
     BuiltBody out;
     out.volume = u.volume;
+    out.inside = [spec = b, dim, mesh](Vec3 p) {
+        return ShapeField{spec, dim, mesh.get()}.inside(p);
+    };
     Real mass = density * u.volume;
     Mat3 inertia = density * u.inertia;
     if (b.mass) {
@@ -318,7 +315,7 @@ BuiltBody build_body(const io::BodySpec& b, const io::CaseSpec& c, Real density,
             }
     } else {
         std::map<std::tuple<Real, Real, Real>, int> seen;
-        for (const auto& t : mesh.triangles)
+        for (const auto& t : mesh->triangles)
             for (const Vec3& v : {t.a, t.b, t.c})
                 if (seen.emplace(std::tuple{v.x, v.y, v.z}, 0).second)
                     m.vertices.push_back(to_body(v));

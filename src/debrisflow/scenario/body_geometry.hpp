@@ -2,6 +2,7 @@
 #include "debrisflow/io/case_spec.hpp"
 #include "debrisflow/rigid/body_model.hpp"
 #include "debrisflow/rigid/body_state.hpp"
+#include <functional>
 
 namespace debrisflow::scenario {
 
@@ -17,6 +18,7 @@ struct BuiltBody {
     rigid::BodyModel model;
     std::vector<BodySurfacePoint> sph_points; // empty when the case has no fluid
     Real volume = 0;                          // geometric volume [m^3] (2D: per metre)
+    std::function<bool(Vec3)> inside;         // point inside the shape at t = 0
 };
 
 // Mass properties, principal frame, contact features and SPH samples of a body. Mass and
@@ -26,8 +28,5 @@ struct BuiltBody {
 // replace them. In 2D the body is 1 m thick along y and turns about y only.
 BuiltBody build_body(const io::BodySpec& spec, const io::CaseSpec& c, Real density, Real sph_dp,
                      int layers);
-
-// Whether p lies inside the body's shape at t = 0 (used to carve the fluid).
-bool body_contains(const io::BodySpec& spec, int dim, Vec3 p);
 
 } // namespace debrisflow::scenario

@@ -153,7 +153,8 @@ std::vector<WallPoint> build_wall(const io::WallSpec& w, const io::CaseSpec& c) 
 
 } // namespace
 
-void build_particles(const io::CaseSpec& c, particles::ParticleSet& set) {
+ParticleId build_particles(const io::CaseSpec& c, particles::ParticleSet& set,
+                           const std::vector<BuiltBody>& bodies) {
     const auto& sph = c.sph;
     // A particle's mass is its initial density times its lattice volume dp^dim (2D: per metre
     // of thickness), so that SPH volumes m/rho match the lattice where the column starts
@@ -170,6 +171,8 @@ void build_particles(const io::CaseSpec& c, particles::ParticleSet& set) {
                                          c.file, w.name, c.dp));
         for (const WallPoint& wp : walls.back()) boundary.push_back(wp.p);
     }
+    for (const auto& b : bodies)
+        for (const auto& sp : b.sph_points) boundary.push_back(sp.p);
     const Real g = norm(sph.gravity);
     const Vec3 down = g > 0 ? (1 / g) * sph.gravity : Vec3{0, 0, -1};
     struct Column {
@@ -180,6 +183,11 @@ void build_particles(const io::CaseSpec& c, particles::ParticleSet& set) {
     for (std::size_t f = 0; f < c.fluids.size(); ++f) {
         const auto& fl = c.fluids[f];
         auto pts = remove_near(fill_shape(fl.shape, c.dp, c.dim), boundary, Real(0.75) * c.dp);
+        std::erase_if(pts, [&](Vec3 p) {
+            for (const auto& b : bodies)
+                if (b.inside(p)) return true;
+            return false;
+        });
         if (pts.empty())
             throw InputError(fmt::format("{}: fluid '{}' produced no particles (shape smaller than "
                                          "dp = {} m, or entirely inside a wall)",
@@ -217,6 +225,20 @@ void build_particles(const io::CaseSpec& c, particles::ParticleSet& set) {
             set.add(p, {}, rho, rho * volume, particles::Kind::boundary, std::int16_t(w));
             set.set_wall(set.size() - 1, wp.n, wp.d);
         }
+    // Body boundary particles: the hydrostatic pressure of the column they start in.
+    const ParticleId first_body = set.size() > 0 ? set.id.back() + 1 : 0;
+    for (const auto& b : bodies)
+        for (const auto& sp : b.sph_points) {
+            Real pressure = 0;
+            for (const auto& col : columns)
+                if (sp.p.x >= col.lo.x && sp.p.x <= col.hi.x && sp.p.y >= col.lo.y &&
+                    sp.p.y <= col.hi.y && col.top + dot(sp.p, down) > 0)
+                    pressure = std::max(pressure, sph.rho0 * g * (col.top + dot(sp.p, down)));
+            const Real rho = eos.density(pressure);
+            set.add(sp.p, {}, rho, rho * volume, particles::Kind::boundary, std::int16_t(-1));
+            set.set_wall(set.size() - 1, sp.n, sp.depth);
+        }
+    return first_body;
 }
 
 } // namespace debrisflow::scenario

@@ -1,0 +1,20 @@
+#pragma once
+#include "debrisflow/probes/probe.hpp"
+
+namespace debrisflow::probes {
+
+// Track of one rigid body: centre of mass, the named point (track_point), velocity, angular
+// velocity, orientation relative to the input frame (quaternion and Z-Y'-X'' roll, pitch,
+// yaw), and the fluid and contact forces on it, separately.
+class BodyProbe : public Probe {
+public:
+    BodyProbe(const io::ProbeSpec& spec, const io::CaseSpec& c);
+    std::vector<std::string> columns() const override;
+    std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
+
+private:
+    std::string body_;
+    int index_ = -1;
+};
+
+} // namespace debrisflow::probes
