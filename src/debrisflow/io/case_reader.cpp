@@ -82,6 +82,11 @@ void read_sph(const ConfigTable& t, CaseSpec& c) {
     p.cfl = t.positive("cfl", 0.2);
     if (p.cfl > 1) t.fail("cfl", "must be <= 1");
     p.reorder_every = int(t.integer("reorder_every", 1));
+    // Without gravity in the fluid there is no hydrostatic pressure; immersed bodies then get
+    // its exact resultant, the buoyancy rho0 V g (sedimentation in closed boxes).
+    c.fluid_gravity = t.boolean("fluid_gravity", true);
+    p.boundary_min_pressure = t.real("boundary_min_pressure", 0);
+    if (p.boundary_min_pressure > 0) t.fail("boundary_min_pressure", "must be <= 0 [Pa]");
     t.finish();
 }
 
@@ -224,7 +229,7 @@ CaseSpec read_case(const std::string& path, const std::vector<std::string>& over
     } else if (sph) {
         sph->fail("c0", "[sph] given but the case has no [[fluid]]");
     }
-    c.sph.gravity = gravity;
+    c.sph.gravity = c.fluid_gravity ? gravity : Vec3{};
 
     for (const auto& t : fluid_tables) {
         FluidSpec f;

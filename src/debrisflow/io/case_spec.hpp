@@ -145,6 +145,7 @@ struct CaseSpec {
     bool vtk = true;
     Real progress_seconds = 2;
     sph::SphParams sph;
+    bool fluid_gravity = true; // [sph] fluid_gravity: false = no hydrostatic field in the fluid
     sph::Domain domain;
     Real c0_coefficient = 0, reference_depth = 0; // when c0 = coefficient * sqrt(g H)
     std::vector<FluidSpec> fluids;

@@ -72,7 +72,9 @@ void BodySolver::update_neighbors(bool) {
 
 Vec3 BodySolver::total_force(int b) const {
     const BodyLoads& l = loads_[b];
-    return l.fluid_force + l.contact_force + l.joint_force + bodies_[b].mass * params_.gravity;
+    const Real buoyant = params_.buoyancy_density * models_[b].volume;
+    return l.fluid_force + l.contact_force + l.joint_force +
+           (bodies_[b].mass - buoyant) * params_.gravity;
 }
 
 Vec3 BodySolver::total_torque(int b) const {

@@ -16,6 +16,8 @@ struct RigidParams {
     Real joint_stabilization = 0.2;
     int dim = 3;
     sph::Domain domain;
+    // > 0 when the fluid carries no gravity: bodies get the buoyancy -rho V g analytically.
+    Real buoyancy_density = 0;
 };
 
 // SPH boundary particles that move with the bodies, addressed by persistent particle id:

@@ -282,6 +282,7 @@ BuiltBody build_body(const io::BodySpec& b, const io::CaseSpec& c, Real density,
     auto to_body = [&](Vec3 p) { return rigid::rotate_inverse(s.q, p - com); };
     rigid::BodyModel& m = out.model;
     m.name = b.name;
+    m.volume = u.volume;
     const auto& sh = b.shape;
     if (sh.type == "box") {
         for (int k = 0; k < (dim == 3 ? 8 : 4); ++k) {

@@ -73,7 +73,8 @@ make_body_solver(const io::CaseSpec& c, const std::vector<BuiltBody>& built,
         joints.joints().push_back(j);
     }
     rigid::RigidParams p;
-    p.gravity = c.sph.gravity;
+    p.gravity = c.dem.params.gravity;
+    if (!c.fluids.empty() && !c.fluid_gravity) p.buoyancy_density = c.sph.rho0;
     p.dt = c.rigid.dt;
     p.joint_iterations = c.rigid.joint_iterations;
     p.joint_stabilization = c.rigid.joint_stabilization;

@@ -23,6 +23,10 @@ struct SphParams {
     Vec3 gravity{0, 0, -9.81};
     Real cfl = 0.2;
     int reorder_every = 1;
+    // DBC boundary particles never fall below the density of this pressure (Crespo et al.
+    // 2007 clamp at p = 0 by default); negative values let fully immersed bodies feel the
+    // suction behind them when the fluid has no hydrostatic background.
+    Real boundary_min_pressure = 0;
 };
 
 } // namespace debrisflow::sph

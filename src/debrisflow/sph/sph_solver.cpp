@@ -155,6 +155,10 @@ DF_HD inline Real wrap(Real v, Real lo, Real hi) {
 }
 } // namespace
 
+Real SphSolver::boundary_min_density() const {
+    return eos_.density(params_.boundary_min_pressure);
+}
+
 void SphSolver::predictor(Real dt) {
     ScopedTimer timer(t_integrate_);
     const Index n = set_.size();
@@ -162,7 +166,7 @@ void SphSolver::predictor(Real dt) {
     auto pv = set_.view();
     Real *x0 = x0_.data(), *y0 = y0_.data(), *z0 = z0_.data();
     Real *vx0 = vx0_.data(), *vy0 = vy0_.data(), *vz0 = vz0_.data(), *r0 = rho0_.data();
-    const Real hdt = Real(0.5) * dt, rho_ref = params_.rho0;
+    const Real hdt = Real(0.5) * dt, rho_ref = boundary_min_density();
     const Domain d = domain_;
     exec::for_each(n, [=](Index i) {
         x0[i] = pv.x[i], y0[i] = pv.y[i], z0[i] = pv.z[i];
@@ -190,7 +194,7 @@ void SphSolver::corrector(Real dt) {
     auto pv = set_.view();
     const Real *x0 = x0_.data(), *y0 = y0_.data(), *z0 = z0_.data();
     const Real *vx0 = vx0_.data(), *vy0 = vy0_.data(), *vz0 = vz0_.data(), *r0 = rho0_.data();
-    const Real rho_ref = params_.rho0;
+    const Real rho_ref = boundary_min_density();
     const Domain d = domain_;
     exec::for_each(pv.n, [=](Index i) {
         const Real eps = -dt * pv.drho[i] / pv.rho[i];
@@ -221,7 +225,7 @@ void SphSolver::verlet_step(Real dt, bool euler) {
     auto pv = set_.view();
     Real *vxo = set_.vx_old.data(), *vyo = set_.vy_old.data(), *vzo = set_.vz_old.data();
     Real* ro = set_.rho_old.data();
-    const Real rho_ref = params_.rho0, hdt2 = Real(0.5) * dt * dt;
+    const Real rho_ref = boundary_min_density(), hdt2 = Real(0.5) * dt * dt;
     const Domain d = domain_;
     exec::for_each(pv.n, [=](Index i) {
         const Real r_new = (euler ? pv.rho[i] : ro[i]) + (euler ? dt : 2 * dt) * pv.drho[i];

@@ -53,6 +53,7 @@ public:
 
 private:
     void update_pressure();
+    Real boundary_min_density() const;
     void compute_sps_stress();
     // Updates pressures (and SPS stresses) and calls f(PairTerms<K, V, D>) for the case's models.
     template <class F> void with_pair_terms(F&& f);
