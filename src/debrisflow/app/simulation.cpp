@@ -29,6 +29,16 @@ Simulation::Simulation(io::CaseSpec spec) : spec_(std::move(spec)) {
         dem_ = std::make_unique<dem::DemSolver>(spec_.dem.params, grains_, dem_walls_,
                                                 spec_.dem.materials, spec_.dem.overrides,
                                                 spec_.domain);
+        if (rigid_) {
+            for (std::size_t b = 0; b < rigid_->models().size(); ++b)
+                if (rigid_->models()[b].samples.empty())
+                    throw InputError(fmt::format(
+                        "{}: body '{}' has no contact spheres for the grains; set [rigid] "
+                        "contact_spacing (m)",
+                        spec_.file, rigid_->models()[b].name));
+            rigid_->attach_grains(&obstacles_);
+            dem_->attach_obstacles(&obstacles_);
+        }
         const auto& p = spec_.dem.params;
         const auto stable = dem_->stability_dt();
         if (p.dt > 0 && p.dt > stable.dt)

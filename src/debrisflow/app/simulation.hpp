@@ -60,6 +60,7 @@ private:
     dem::WallSet dem_walls_;
     std::unique_ptr<dem::DemSolver> dem_;
     std::unique_ptr<rigid::BodySolver> rigid_;
+    dem::ObstacleSet obstacles_; // grain-body contact link
     bool settled_ = false;
     std::vector<std::unique_ptr<probes::Probe>> probes_;
     Log log_;

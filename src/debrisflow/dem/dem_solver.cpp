@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <limits>
 #include <omp.h>
+#include <unordered_map>
 
 namespace debrisflow::dem {
 
@@ -72,6 +73,7 @@ void DemSolver::rebuild() {
         grains_.permute(perm);
         grain_slots_.permute(perm);
         wall_slots_.permute(perm);
+        obstacle_slots_.permute(perm);
         build_grid();
     }
     const GrainView g = grains_.view();
@@ -243,9 +245,19 @@ void DemSolver::forces(Real half_kick) {
     const Vec3 grav = params_.gravity;
     const bool plane = params_.dim == 2;
     const Real half = half_kick;
+    // grain-obstacle (rigid body) contacts
+    const std::size_t nb = obstacles_ ? obstacles_->body_com.size() : 0;
+    std::vector<Real> body_sum(6 * nb, 0);
+    const Index ocap = obstacle_slots_.capacity();
+    const Index* op = obstacles_ ? obstacle_slots_.partners() : nullptr;
+    const Index* ocount =
+        obstacles_ && obstacle_slots_.slots() > 0 ? obstacle_slots_.counts() : nullptr;
+    ContactHistory* oh = obstacle_slots_.history();
+    const ObstacleSphere* osph = obstacles_ ? obstacles_->spheres.data() : nullptr;
+    const Vec3* ocom = obstacles_ ? obstacles_->body_com.data() : nullptr;
 #pragma omp parallel reduction(+ : touching, fsum) if (n > parallel_min)
     {
-        std::vector<Real> local(6 * nw, 0);
+        std::vector<Real> local(6 * nw, 0), obody(6 * nb, 0);
 #pragma omp for schedule(static)
         for (Index i = 0; i < n; ++i) {
             Vec3 f = g.mass[i] * grav, t{};
@@ -297,6 +309,32 @@ void DemSolver::forces(Real half_kick) {
                     ++touching;
                 }
             }
+            const Index co = ocount ? ocount[i] : 0;
+            if (co > 0) {
+                const GrainState si = hot[i];
+                const std::size_t obase = std::size_t(i) * std::size_t(ocap);
+                for (Index k = 0; k < co; ++k) {
+                    const ObstacleSphere& o = osph[op[obase + std::size_t(k)]];
+                    ContactHistory& hk = oh[obase + std::size_t(k)];
+                    const Vec3 r = si.x - o.x;
+                    const Real rs = si.r + o.r, d2 = dot(r, r);
+                    if (d2 >= rs * rs || d2 == 0) {
+                        hk = ContactHistory{};
+                        continue;
+                    }
+                    const GrainState so{o.x, o.v, o.w, o.r, o.m, o.material};
+                    const GrainPairForce c = grain_pair_force(table(si.material, o.material), si,
+                                                              so, r, d2, h_contact, hk);
+                    f += c.force_i;
+                    t += c.torque_i;
+                    const Vec3 tb = c.torque_j + cross(o.x - ocom[o.body], -c.force_i);
+                    Real* bs = obody.data() + 6 * std::size_t(o.body);
+                    bs[0] -= c.force_i.x, bs[1] -= c.force_i.y, bs[2] -= c.force_i.z;
+                    bs[3] += tb.x, bs[4] += tb.y, bs[5] += tb.z;
+                    fsum += norm(c.force_i);
+                    ++touching;
+                }
+            }
             if (plane) f.y = 0, t.x = 0, t.z = 0;
             if (half > 0) {
                 const Real im = g.inv_mass[i], ii = g.inv_inertia[i];
@@ -307,7 +345,22 @@ void DemSolver::forces(Real half_kick) {
             g.torque[i] = t;
         }
 #pragma omp critical(dem_wall_sum)
-        for (std::size_t k = 0; k < local.size(); ++k) wall_sum[k] += local[k];
+        {
+            for (std::size_t k = 0; k < local.size(); ++k) wall_sum[k] += local[k];
+            for (std::size_t k = 0; k < obody.size(); ++k) body_sum[k] += obody[k];
+        }
+    }
+    if (obstacles_ && current_h_ > 0) {
+        auto& o = *obstacles_;
+        o.impulse.resize(nb);
+        o.angular_impulse.resize(nb);
+        for (std::size_t b = 0; b < nb; ++b) {
+            o.impulse[b] +=
+                current_h_ * Vec3{body_sum[6 * b], body_sum[6 * b + 1], body_sum[6 * b + 2]};
+            o.angular_impulse[b] +=
+                current_h_ * Vec3{body_sum[6 * b + 3], body_sum[6 * b + 4], body_sum[6 * b + 5]};
+        }
+        o.time += current_h_;
     }
     contacts_ = touching;
     sum_contact_force_ = fsum;
@@ -326,10 +379,52 @@ void DemSolver::step(Real h) {
         w.impulse_time += h;
     }
     if (drift_ > Real(0.5) * skin_) rebuild();
+    if (obstacles_ && (obstacles_->version != obstacles_seen_ || builds_ != obstacle_builds_seen_))
+        build_obstacle_slots();
     {
         ScopedTimer timer(t_forces_);
         forces(Real(0.5) * h);
     }
+}
+
+void DemSolver::build_obstacle_slots() {
+    obstacles_seen_ = obstacles_->version;
+    obstacle_builds_seen_ = builds_;
+    const auto& sph = obstacles_->spheres;
+    const Index n = grains_.size();
+    Real rmax = 0;
+    for (const auto& o : sph) rmax = std::max(rmax, o.r);
+    // Hash of the obstacle spheres on cells of one reach (largest grain + sphere + skin).
+    const Real cell = std::max(max_radius_ + rmax + skin_, Real(1e-9));
+    auto key = [&](long i, long j, long k) {
+        return (std::uint64_t(i) * 73856093u) ^ (std::uint64_t(j) * 19349663u) ^
+               (std::uint64_t(k) * 83492791u);
+    };
+    std::unordered_map<std::uint64_t, std::vector<Index>> hash;
+    for (std::size_t s = 0; s < sph.size(); ++s) {
+        const Vec3 p = sph[s].x;
+        hash[key(long(std::floor(p.x / cell)), long(std::floor(p.y / cell)),
+                 long(std::floor(p.z / cell)))]
+            .push_back(Index(s));
+    }
+    const GrainView g = grains_.view();
+    const Real skin = skin_;
+    obstacle_slots_.build(n, [&](Index i, auto&& emit) {
+        const Vec3 p = g.pos[i];
+        const long ci = long(std::floor(p.x / cell)), cj = long(std::floor(p.y / cell)),
+                   ck = long(std::floor(p.z / cell));
+        for (long dk = -1; dk <= 1; ++dk)
+            for (long dj = -1; dj <= 1; ++dj)
+                for (long di = -1; di <= 1; ++di) {
+                    auto it = hash.find(key(ci + di, cj + dj, ck + dk));
+                    if (it == hash.end()) continue;
+                    for (Index s : it->second) {
+                        const Vec3 d = p - sph[std::size_t(s)].x;
+                        const Real reach = g.radius[i] + sph[std::size_t(s)].r + skin;
+                        if (dot(d, d) < reach * reach) emit(s, std::uint32_t(s));
+                    }
+                }
+    });
 }
 
 void DemSolver::advance(Real dt) {

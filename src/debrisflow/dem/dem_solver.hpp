@@ -4,6 +4,7 @@
 #include "debrisflow/dem/grain_contact_k.hpp"
 #include "debrisflow/dem/grain_set.hpp"
 #include "debrisflow/dem/materials.hpp"
+#include "debrisflow/dem/obstacles.hpp"
 #include "debrisflow/dem/wall_set.hpp"
 #include "debrisflow/neighbors/cell_grid.hpp"
 #include "debrisflow/sph/sph_solver.hpp"
@@ -46,6 +47,8 @@ public:
     void rebuild_now() { rebuild(); }
     // Removes a wall (a gate opening): its contacts end at the next step.
     void remove_wall(int wall);
+    // Grains also collide with the spheres of rigid bodies in `o` (null: none).
+    void attach_obstacles(ObstacleSet* o) { obstacles_ = o; }
     // Sets every grain's velocity and spin to zero (end of settling).
     void stop_grains();
 
@@ -72,6 +75,8 @@ private:
     void refresh_hot();
     void kick_drift(Real h);
     void forces(Real half_kick);
+    // Candidate grain-obstacle pairs within reach (rebuilt when either side moved).
+    void build_obstacle_slots();
 
     DemParams params_;
     GrainSet& grains_;
@@ -80,7 +85,10 @@ private:
     std::vector<PairParams> table_;
     sph::Domain domain_;
     neighbors::CellGrid grid_;
-    ContactSlots grain_slots_, wall_slots_;
+    ContactSlots grain_slots_, wall_slots_, obstacle_slots_;
+    ObstacleSet* obstacles_ = nullptr;
+    std::uint64_t obstacles_seen_ = ~std::uint64_t(0);
+    long obstacle_builds_seen_ = -1;
     std::vector<std::vector<Real>> buffers_;
     // Interleaved copy of the state the contact loop reads (one 96-byte record per grain
     // instead of twelve arrays), written by the drift; the GrainSet stays the master copy.

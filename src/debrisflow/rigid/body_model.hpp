@@ -24,7 +24,7 @@ struct BodyModel {
     std::vector<Real> times; // prescribed motion: piecewise-linear in time
     std::vector<Vec3> velocity, angular_velocity;
     Vec3 bound_radius; // x: largest distance of any feature from the CoM
-    Real volume = 0; // [m^3] (2D: per metre), for the analytic buoyancy
+    Real volume = 0;   // [m^3] (2D: per metre), for the analytic buoyancy
 };
 
 // Piecewise-linear interpolation of a table (constant beyond its ends).

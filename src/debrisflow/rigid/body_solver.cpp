@@ -24,6 +24,34 @@ void BodySolver::attach_particles(particles::ParticleSet* set, BodyParticles par
     refresh_members();
 }
 
+void BodySolver::attach_grains(dem::ObstacleSet* obstacles) {
+    obstacles_ = obstacles;
+    grain_force_.assign(bodies_.size(), {});
+    grain_torque_.assign(bodies_.size(), {});
+    obstacles_->impulse.assign(bodies_.size(), {});
+    obstacles_->angular_impulse.assign(bodies_.size(), {});
+    obstacles_->time = 0;
+    update_obstacles();
+}
+
+void BodySolver::update_obstacles() {
+    if (!obstacles_) return;
+    auto& o = *obstacles_;
+    o.spheres.clear();
+    o.body_com.resize(bodies_.size());
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        const BodyState& s = bodies_[b];
+        o.body_com[b] = s.pos;
+        const Real m = s.motion == Motion::free ? s.mass : Real(1e20);
+        const Vec3 w = s.omega();
+        for (const auto& sp : models_[b].samples) {
+            const Vec3 x = s.to_world(sp.center);
+            o.spheres.push_back({x, s.point_velocity(x), w, sp.radius, m, s.material, int(b)});
+        }
+    }
+    ++o.version;
+}
+
 int BodySolver::find(const std::string& name) const {
     for (std::size_t b = 0; b < models_.size(); ++b)
         if (models_[b].name == name) return int(b);
@@ -97,6 +125,20 @@ void BodySolver::compute_forces() {
             loads_[b].fluid_torque += cross(x - bodies_[b].pos, f);
         }
     }
+    if (obstacles_) {
+        auto& o = *obstacles_;
+        if (o.time > 0)
+            for (std::size_t b = 0; b < bodies_.size(); ++b) {
+                grain_force_[b] = (1 / o.time) * o.impulse[b];
+                grain_torque_[b] = (1 / o.time) * o.angular_impulse[b];
+                o.impulse[b] = o.angular_impulse[b] = {};
+            }
+        o.time = 0;
+        for (std::size_t b = 0; b < bodies_.size(); ++b) {
+            loads_[b].contact_force += grain_force_[b];
+            loads_[b].contact_torque += grain_torque_[b];
+        }
+    }
     max_contact_rate_ = contacts_.compute(bodies_, models_, walls_, loads_, elapsed_, commit_next_);
     joints_.add_spring_loads(bodies_, loads_);
     if (pending_kick_ > 0) {
@@ -152,6 +194,7 @@ void BodySolver::predictor(Real dt) {
     kick(Real(0.5) * dt);
     constrain(Real(0.5) * dt);
     move_particles(true);
+    update_obstacles();
     elapsed_ = Real(0.5) * dt;
     commit_next_ = false;
 }
@@ -186,6 +229,7 @@ void BodySolver::corrector(Real dt) {
     constrain(dt);
     t_ = saved_t_ + dt;
     move_particles(true);
+    update_obstacles();
     elapsed_ = dt;
     commit_next_ = true;
 }
@@ -198,6 +242,7 @@ void BodySolver::verlet_step(Real dt, bool) {
     t_ += dt;
     pending_kick_ = dt;
     move_particles(true);
+    update_obstacles();
     elapsed_ = dt;
     commit_next_ = true;
 }

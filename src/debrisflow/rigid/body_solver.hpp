@@ -1,4 +1,5 @@
 #pragma once
+#include "debrisflow/dem/obstacles.hpp"
 #include "debrisflow/particles/particle_set.hpp"
 #include "debrisflow/rigid/body_contacts.hpp"
 #include "debrisflow/rigid/joints.hpp"
@@ -42,6 +43,10 @@ public:
                JointSet joints, BodyContacts contacts, const dem::WallSet* walls);
     // Couples the bodies to the fluid through their boundary particles in `set`.
     void attach_particles(particles::ParticleSet* set, BodyParticles particles);
+    // Couples the bodies to the grains: their contact samples become DEM obstacle spheres;
+    // the grains' reaction (averaged over the DEM steps since the last collection) is added
+    // to the contact loads, so the momentum exchanged is the same on both sides.
+    void attach_grains(dem::ObstacleSet* obstacles);
 
     const char* name() const override { return "rigid"; }
     void update_neighbors(bool reorder) override;
@@ -69,6 +74,7 @@ public:
 
 private:
     void refresh_members();
+    void update_obstacles();
     void move_particles(bool positions);
     void kick(Real h);              // v += h F/m, L += h T (free bodies)
     void drift(Real h, Real t_mid); // x += h v, free rotation over h; prescribed motion
@@ -86,6 +92,8 @@ private:
     particles::ParticleSet* set_ = nullptr;
     BodyParticles particles_;
     std::vector<Index> members_;
+    dem::ObstacleSet* obstacles_ = nullptr;
+    std::vector<Vec3> grain_force_, grain_torque_; // last collected grain reaction
     std::uint64_t layout_seen_ = ~std::uint64_t(0);
     Real t_ = 0, saved_t_ = 0;
     Real elapsed_ = 0;        // time since the contact history was committed
