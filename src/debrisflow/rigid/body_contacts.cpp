@@ -1,41 +1,49 @@
 #include "debrisflow/rigid/body_contacts.hpp"
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <tuple>
 
 namespace debrisflow::rigid {
 
 namespace {
 
-// Deepest contact of a sphere (radius r >= 0; r = 0: a vertex) at p with a wall primitive.
-// `inside` is a point of the body, which tells a vertex which side of a triangle it is on.
-bool touch(const dem::WallPrimitive& w, Vec3 p, Real r, Vec3 inside, Real reach, Vec3& n,
-           Real& delta) {
+// Signed gap (< 0: overlap) and contact normal (from the wall to the body) of a sphere of
+// radius r >= 0 (r = 0: a vertex) at p against a wall primitive. `inside` is a point of the
+// body, which tells a vertex which side of a triangle it is on; vertices deeper than `reach`
+// behind a triangle, or whose foot is off it, do not count.
+bool gap_to(const dem::WallPrimitive& w, Vec3 p, Real r, Vec3 inside, Real reach, Vec3& n,
+            Real& gap) {
     if (w.type == dem::PrimitiveType::plane) {
-        const Real s = dot(p - w.a, w.n);
-        if (s >= r) return false;
         n = w.n;
-        delta = r - s;
+        gap = dot(p - w.a, w.n) - r;
         return true;
     }
     if (r > 0) {
         const Vec3 q = dem::closest_on_triangle(p, w.a, w.b, w.c);
         const Vec3 d = p - q;
         const Real dist = norm(d);
-        if (dist >= r || dist == 0) return false;
+        if (dist == 0) return false;
         n = (1 / dist) * d;
-        delta = r - dist;
+        gap = dist - r;
         return true;
     }
     const Vec3 side = dot(inside - w.a, w.n) >= 0 ? w.n : -w.n;
     const Real s = dot(p - w.a, side);
-    if (s >= 0 || s < -reach) return false;
+    if (s < -reach) return false;
     const Vec3 foot = p - s * side;
     const Vec3 q = dem::closest_on_triangle(foot, w.a, w.b, w.c);
     if (dot(q - foot, q - foot) > Real(1e-18) + Real(1e-12) * reach * reach) return false;
     n = side;
-    delta = -s;
+    gap = s;
     return true;
+}
+
+// Duration of a Hertz impact at approach speed v (Johnson 1985, eq. 11.24):
+// t_c = 2.87 (m*^2 / (R* E*^2 v))^(1/5); of a linear spring: pi sqrt(m*/k_n).
+Real impact_duration(const dem::PairParams& p, Real r_eff, Real m_eff, Real v) {
+    if (p.law == dem::LawId::linear) return Real(3.14159265358979) * std::sqrt(m_eff / p.kn);
+    return Real(2.87) * std::pow(m_eff * m_eff / (r_eff * p.e_star * p.e_star * v), Real(0.2));
 }
 
 std::uint64_t key(std::uint64_t a, std::uint64_t b, std::uint64_t c) {
@@ -65,9 +73,10 @@ void BodyContacts::add(const dem::PairParams& p, const Hit& h, const BodyState& 
 
 Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<BodyModel>& m,
                            const dem::WallSet* walls, std::vector<BodyLoads>& loads, Real elapsed,
-                           bool commit) {
+                           bool commit, Real horizon) {
     contacts_ = 0;
     max_rate_ = 0;
+    imminent_dt_ = std::numeric_limits<Real>::max();
     std::unordered_map<std::uint64_t, dem::ContactHistory> wall_next, body_next;
     // Body-wall: vertices and exact spheres against every active primitive.
     if (walls && !walls->empty()) {
@@ -89,8 +98,21 @@ Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<Bo
                 for (const auto& w : prims) {
                     if (!wl[w.wall].active) continue;
                     Vec3 n;
-                    Real delta;
-                    if (!touch(w, p, sp.radius, b.pos, reach, n, delta)) continue;
+                    Real gap;
+                    if (!gap_to(w, p, sp.radius, b.pos, reach, n, gap)) continue;
+                    if (gap >= 0) { // not touching: does it touch within the horizon?
+                        const Real vn = -dot(b.point_velocity(p) - wl[w.wall].velocity, n);
+                        if (vn > 0 && gap < vn * horizon) {
+                            const int wm =
+                                wl[w.wall].material >= 0 ? wl[w.wall].material : b.material;
+                            const Real r_eff = vertex ? b.contact_radius : sp.radius;
+                            imminent_dt_ = std::min(
+                                imminent_dt_, Real(0.1) * impact_duration(pair(b.material, wm),
+                                                                          r_eff, b.mass, vn));
+                        }
+                        continue;
+                    }
+                    const Real delta = -gap;
                     const Hit h{delta, n, p - (sp.radius - Real(0.5) * delta) * n};
                     auto it = std::find_if(best.begin(), best.end(),
                                            [&](const auto& e) { return std::get<0>(e) == w.wall; });
@@ -163,8 +185,23 @@ Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<Bo
                             const Vec3 d = a.x - b.x;
                             const Real dist = norm(d);
                             const Real delta = a.r + b.r - dist;
-                            if (delta <= 0 || dist == 0) continue;
+                            if (dist == 0) continue;
                             const Vec3 n = (1 / dist) * d;
+                            if (delta <= 0) {
+                                const Real vn =
+                                    -dot(A.point_velocity(a.x) - B.point_velocity(b.x), n);
+                                if (vn > 0 && -delta < vn * horizon) {
+                                    const Real m_eff = A.inv_mass + B.inv_mass > 0
+                                                           ? 1 / (A.inv_mass + B.inv_mass)
+                                                           : A.mass;
+                                    imminent_dt_ = std::min(
+                                        imminent_dt_,
+                                        Real(0.1) * impact_duration(pair(A.material, B.material),
+                                                                    a.r * b.r / (a.r + b.r), m_eff,
+                                                                    vn));
+                                }
+                                continue;
+                            }
                             const Hit h{delta, n, b.x + (b.r - Real(0.5) * delta) * n};
                             const Real m_eff = A.inv_mass + B.inv_mass > 0
                                                    ? 1 / (A.inv_mass + B.inv_mass)

@@ -24,10 +24,14 @@ public:
         : table_(std::move(table)), materials_(materials) {}
 
     // Adds contact loads; returns the largest contact stiffness over mass (1/s^2) seen.
+    // Features that are not touching but will within `horizon` seconds at their approach
+    // speed set imminent_dt() to 0.1 x the impact duration at that speed, so that a fast
+    // approach does not enter a stiff contact with a step sized for the free flight.
     Real compute(const std::vector<BodyState>& s, const std::vector<BodyModel>& m,
                  const dem::WallSet* walls, std::vector<BodyLoads>& loads, Real elapsed,
-                 bool commit);
+                 bool commit, Real horizon);
     long contacts() const { return contacts_; }
+    Real imminent_dt() const { return imminent_dt_; }
 
 private:
     struct Hit {
@@ -44,6 +48,7 @@ private:
     std::unordered_map<std::uint64_t, dem::ContactHistory> wall_hist_, body_hist_;
     long contacts_ = 0;
     Real max_rate_ = 0;
+    Real imminent_dt_ = 0;
 };
 
 } // namespace debrisflow::rigid

@@ -139,7 +139,10 @@ void BodySolver::compute_forces() {
             loads_[b].contact_torque += grain_torque_[b];
         }
     }
-    max_contact_rate_ = contacts_.compute(bodies_, models_, walls_, loads_, elapsed_, commit_next_);
+    // Look ahead three steps of the current size (the first evaluation: a millisecond).
+    const Real horizon = 3 * (last_dt_ > 0 ? last_dt_ : Real(1e-3));
+    max_contact_rate_ =
+        contacts_.compute(bodies_, models_, walls_, loads_, elapsed_, commit_next_, horizon);
     joints_.add_spring_loads(bodies_, loads_);
     if (pending_kick_ > 0) {
         const Real h = pending_kick_;
@@ -189,6 +192,7 @@ void BodySolver::predictor(Real dt) {
     ScopedTimer timer(t_integrate_);
     saved_ = bodies_;
     saved_t_ = t_;
+    last_dt_ = dt;
     // x_n+1/2 = x_n + dt/2 v_n, v_n+1/2 = v_n + dt/2 a_n (as the SPH predictor)
     drift(Real(0.5) * dt, t_ + Real(0.25) * dt);
     kick(Real(0.5) * dt);
@@ -236,6 +240,7 @@ void BodySolver::corrector(Real dt) {
 
 void BodySolver::verlet_step(Real dt, bool) {
     ScopedTimer timer(t_integrate_);
+    last_dt_ = dt;
     kick(Real(0.5) * dt);
     constrain(dt);
     drift(dt, t_ + Real(0.5) * dt);
@@ -255,6 +260,7 @@ void BodySolver::step(Real dt) {
 time::DtLimit BodySolver::stable_dt() const {
     time::DtLimit lim{std::numeric_limits<Real>::max(), "none"};
     if (params_.dt > 0) lim = {params_.dt, "user dt"};
+    if (contacts_.imminent_dt() < lim.dt) lim = {contacts_.imminent_dt(), "impact"};
     if (max_contact_rate_ > 0) {
         const Real dtc = Real(0.2) * 3.14159265358979 / std::sqrt(max_contact_rate_);
         if (dtc < lim.dt) lim = {dtc, "contact"};

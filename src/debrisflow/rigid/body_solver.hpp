@@ -100,6 +100,7 @@ private:
     bool commit_next_ = true; // the next force evaluation ends a step
     Real pending_kick_ = 0;   // velocity Verlet: second half kick still to apply
     Real max_contact_rate_ = 0;
+    Real last_dt_ = 0; // size of the last step taken
     double t_forces_ = 0, t_integrate_ = 0;
 };
 
