@@ -1,12 +1,14 @@
 #include "debrisflow/probes/wall_force_probe.hpp"
 #include "debrisflow/dem/dem_solver.hpp"
 #include "debrisflow/probes/sph_probes.hpp"
+#include "debrisflow/rigid/body_solver.hpp"
 
 namespace debrisflow::probes {
 
 WallForceProbe::WallForceProbe(const io::ProbeSpec& s, int wall, const io::CaseSpec& c)
     : Probe(s.name, s.every), wall_(wall), normal_(s.normal),
-      unit_(c.dim == 2 && !c.fluids.empty() ? "N/m" : "N"), grains_(c.has_dem) {}
+      unit_(c.dim == 2 && !c.fluids.empty() ? "N/m" : "N"), grains_(c.has_dem),
+      bodies_(c.has_bodies()) {}
 
 std::vector<std::string> WallForceProbe::columns() const {
     std::vector<std::string> c{"Fx [" + unit_ + "]", "Fy [" + unit_ + "]", "Fz [" + unit_ + "]",
@@ -20,6 +22,9 @@ std::vector<std::string> WallForceProbe::columns() const {
         c.push_back("My_grains [N m]");
         c.push_back("Mz_grains [N m]");
     }
+    if (bodies_)
+        for (const char* a : {"x", "y", "z"})
+            c.push_back(std::string("F") + a + "_bodies [" + unit_ + "]");
     return c;
 }
 
@@ -36,6 +41,12 @@ std::vector<Real> WallForceProbe::sample(Real, const ProbeContext& ctx) {
         w.impulse = {};
         w.impulse_time = 0;
     }
+    Vec3 fb;
+    if (ctx.rigid) {
+        fb = ctx.rigid->wall_force(wall_);
+        f += fb;
+        avg += fb;
+    }
     std::vector<Real> out{f.x, f.y, f.z, norm(f)};
     if (norm(normal_) > 0) {
         out.push_back(dot(f, normal_));
@@ -45,6 +56,7 @@ std::vector<Real> WallForceProbe::sample(Real, const ProbeContext& ctx) {
         const Vec3 m = ctx.dem->walls().walls()[std::size_t(wall_)].moment;
         out.insert(out.end(), {m.x, m.y, m.z});
     }
+    if (bodies_) out.insert(out.end(), {fb.x, fb.y, fb.z});
     return out;
 }
 

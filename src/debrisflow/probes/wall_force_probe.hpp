@@ -9,7 +9,8 @@ namespace debrisflow::probes {
 // (grain impulse / interval; the instantaneous value of a stiff contact network fluctuates
 // at the contact frequency, the averaged one is what a load cell of that bandwidth reads).
 // With grains, also the grains' moment on the wall about its origin (plane point, box or mesh
-// centre).
+// centre). With rigid bodies, their contact force on the wall is included and also
+// reported alone (F*_bodies).
 class WallForceProbe : public Probe {
 public:
     WallForceProbe(const io::ProbeSpec& s, int wall, const io::CaseSpec& c);
@@ -20,7 +21,7 @@ private:
     int wall_;
     Vec3 normal_;
     std::string unit_;
-    bool grains_;
+    bool grains_, bodies_;
 };
 
 } // namespace debrisflow::probes

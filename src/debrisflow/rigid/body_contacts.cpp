@@ -79,6 +79,7 @@ Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<Bo
     imminent_dt_ = std::numeric_limits<Real>::max();
     std::unordered_map<std::uint64_t, dem::ContactHistory> wall_next, body_next;
     // Body-wall: vertices and exact spheres against every active primitive.
+    wall_force_.assign(walls ? walls->walls().size() : 0, Vec3{});
     if (walls && !walls->empty()) {
         const auto& prims = walls->primitives();
         const auto& wl = walls->walls();
@@ -127,9 +128,11 @@ Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<Bo
                     auto it = wall_hist_.find(k);
                     dem::ContactHistory hist =
                         it != wall_hist_.end() ? it->second : dem::ContactHistory{};
+                    const Vec3 before = loads[bi].contact_force;
                     add(pair(b.material, wm), h, b, nullptr, wl[wall].velocity,
                         vertex ? b.contact_radius : sp.radius, b.mass, loads[bi], nullptr, hist,
                         elapsed);
+                    wall_force_[std::size_t(wall)] -= loads[bi].contact_force - before;
                     wall_next[k] = hist;
                 }
             }

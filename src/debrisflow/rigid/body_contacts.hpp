@@ -32,6 +32,8 @@ public:
                  bool commit, Real horizon);
     long contacts() const { return contacts_; }
     Real imminent_dt() const { return imminent_dt_; }
+    // Force of the bodies on each geometric wall in the last evaluation [N].
+    const std::vector<Vec3>& wall_forces() const { return wall_force_; }
 
 private:
     struct Hit {
@@ -49,6 +51,7 @@ private:
     long contacts_ = 0;
     Real max_rate_ = 0;
     Real imminent_dt_ = 0;
+    std::vector<Vec3> wall_force_;
 };
 
 } // namespace debrisflow::rigid

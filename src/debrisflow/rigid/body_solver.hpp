@@ -68,6 +68,11 @@ public:
     const JointSet& joints() const { return joints_; }
     int find(const std::string& name) const; // -1 if absent
     long contacts() const { return contacts_.contacts(); }
+    // Force of all bodies on geometric wall w in the last evaluation [N].
+    Vec3 wall_force(int w) const {
+        const auto& f = contacts_.wall_forces();
+        return std::size_t(w) < f.size() ? f[std::size_t(w)] : Vec3{};
+    }
     Real time() const { return t_; }
     // Kinetic energy and world angular momentum of body b (about its centre of mass).
     Real kinetic_energy(int b) const;
