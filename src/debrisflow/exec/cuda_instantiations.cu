@@ -2,6 +2,7 @@
 // kernel, so that every per-pair rule stays device-callable. No GPU is needed to compile this
 // file.
 #include "debrisflow/dem/grain_contact_k.hpp"
+#include "debrisflow/rigid/body_state.hpp"
 #include "debrisflow/kernels/cubic_spline_k.hpp"
 #include "debrisflow/kernels/wendland_c2_k.hpp"
 #include "debrisflow/models/density_diffusion_k.hpp"
@@ -73,8 +74,27 @@ struct DemContacts {
     }
 };
 
+// Rigid-body kinematics on the device: free rotation of every body and the motion of its
+// boundary particles (the body Phase's loops).
+struct RigidMotion {
+    rigid::BodyState* bodies;
+    const std::int32_t* owner;
+    const Vec3* offset;
+    Real *x, *y, *z, *vx, *vy, *vz;
+    Real dt;
+    DF_HD void operator()(Index i) const {
+        rigid::BodyState& b = bodies[owner[i]];
+        rigid::free_rotation(b.q, b.ang_mom, b.inv_inertia, dt);
+        const Vec3 arm = rigid::rotate(b.q, offset[i]);
+        const Vec3 v = b.vel + cross(b.omega(), arm);
+        x[i] = b.pos.x + arm.x, y[i] = b.pos.y + arm.y, z[i] = b.pos.z + arm.z;
+        vx[i] = v.x, vy[i] = v.y, vz[i] = v.z;
+    }
+};
+
 void instantiate_all() {
     launch(0, DemContacts{});
+    launch(0, RigidMotion{});
     instantiate_kernel<kernels::WendlandC2>();
     instantiate_kernel<kernels::CubicSpline>();
 }
