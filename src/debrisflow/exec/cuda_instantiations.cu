@@ -2,11 +2,11 @@
 // kernel, so that every per-pair rule stays device-callable. No GPU is needed to compile this
 // file.
 #include "debrisflow/dem/grain_contact_k.hpp"
-#include "debrisflow/rigid/body_state.hpp"
 #include "debrisflow/kernels/cubic_spline_k.hpp"
 #include "debrisflow/kernels/wendland_c2_k.hpp"
 #include "debrisflow/models/density_diffusion_k.hpp"
 #include "debrisflow/models/viscosity_k.hpp"
+#include "debrisflow/rigid/body_state.hpp"
 #include "debrisflow/sph/interaction_k.hpp"
 
 namespace debrisflow::cuda {

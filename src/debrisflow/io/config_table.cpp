@@ -131,18 +131,24 @@ std::string ConfigTable::choice(const std::string& key, const std::vector<std::s
     fail(key, fmt::format("unknown choice \"{}\"; expected one of {}", v, list));
 }
 
+namespace {
+// A TOML integer or float as a Real.
+std::optional<Real> number(const toml::node& e) {
+    if (auto v = e.value_exact<double>()) return Real(*v);
+    if (auto w = e.value_exact<std::int64_t>()) return Real(*w);
+    return std::nullopt;
+}
+} // namespace
+
 std::vector<Real> ConfigTable::reals(const std::string& key) const {
     const toml::node& n = require(key);
     const toml::array* arr = n.as_array();
     if (!arr) fail(key, "expected an array of numbers, found " + type_name(n));
     std::vector<Real> out;
     for (const auto& e : *arr) {
-        if (auto v = e.value_exact<double>())
-            out.push_back(Real(*v));
-        else if (auto w = e.value_exact<std::int64_t>())
-            out.push_back(Real(*w));
-        else
-            fail(key, "expected an array of numbers, found an element that is " + type_name(e));
+        const auto v = number(e);
+        if (!v) fail(key, "expected an array of numbers, found an element that is " + type_name(e));
+        out.push_back(*v);
     }
     return out;
 }
@@ -158,12 +164,9 @@ std::vector<std::vector<Real>> ConfigTable::rows(const std::string& key, std::si
         if (!r || r->size() != width) fail(key, expect);
         std::vector<Real> vals;
         for (const auto& e : *r) {
-            if (auto v = e.value_exact<double>())
-                vals.push_back(Real(*v));
-            else if (auto w = e.value_exact<std::int64_t>())
-                vals.push_back(Real(*w));
-            else
-                fail(key, expect + "; found an element that is " + type_name(e));
+            const auto v = number(e);
+            if (!v) fail(key, expect + "; found an element that is " + type_name(e));
+            vals.push_back(*v);
         }
         out.push_back(vals);
     }

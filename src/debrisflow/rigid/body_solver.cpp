@@ -163,18 +163,21 @@ void BodySolver::kick(Real h) {
     }
 }
 
+void BodySolver::move_prescribed(BodyState& s, const BodyModel& m, Real h, Real t_mid) {
+    if (!m.times.empty()) {
+        s.vel = interpolate(m.times, m.velocity, t_mid);
+        s.prescribed_omega = interpolate(m.times, m.angular_velocity, t_mid);
+    }
+    s.pos += h * s.vel;
+    s.q = normalized(from_rotation_vector(h * s.prescribed_omega) * s.q);
+}
+
 void BodySolver::drift(Real h, Real t_mid) {
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
         BodyState& s = bodies_[b];
         if (s.motion == Motion::fixed) continue;
         if (s.motion == Motion::prescribed) {
-            const BodyModel& m = models_[b];
-            if (!m.times.empty()) {
-                s.vel = interpolate(m.times, m.velocity, t_mid);
-                s.prescribed_omega = interpolate(m.times, m.angular_velocity, t_mid);
-            }
-            s.pos += h * s.vel;
-            s.q = normalized(from_rotation_vector(h * s.prescribed_omega) * s.q);
+            move_prescribed(s, models_[b], h, t_mid);
             continue;
         }
         s.pos += h * s.vel;
@@ -212,13 +215,7 @@ void BodySolver::corrector(Real dt) {
         BodyState& s = bodies_[b];
         if (s.motion == Motion::fixed) continue;
         if (s.motion == Motion::prescribed) { // moves with its mid-step velocity
-            const BodyModel& m = models_[b];
-            if (!m.times.empty()) {
-                s.vel = interpolate(m.times, m.velocity, t_ + Real(0.5) * dt);
-                s.prescribed_omega = interpolate(m.times, m.angular_velocity, t_ + Real(0.5) * dt);
-            }
-            s.pos += dt * s.vel;
-            s.q = normalized(from_rotation_vector(dt * s.prescribed_omega) * s.q);
+            move_prescribed(s, models_[b], dt, t_ + Real(0.5) * dt);
             continue;
         }
         const Vec3 v0 = s.vel;

@@ -83,6 +83,8 @@ private:
     void move_particles(bool positions);
     void kick(Real h);              // v += h F/m, L += h T (free bodies)
     void drift(Real h, Real t_mid); // x += h v, free rotation over h; prescribed motion
+    // Prescribed body over h with its table velocities at t_mid (midpoint rule).
+    static void move_prescribed(BodyState& s, const BodyModel& m, Real h, Real t_mid);
     void constrain(Real dt);        // joints and locks
     Vec3 total_force(int b) const;
     Vec3 total_torque(int b) const;
