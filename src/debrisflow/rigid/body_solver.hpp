@@ -85,7 +85,7 @@ private:
     void drift(Real h, Real t_mid); // x += h v, free rotation over h; prescribed motion
     // Prescribed body over h with its table velocities at t_mid (midpoint rule).
     static void move_prescribed(BodyState& s, const BodyModel& m, Real h, Real t_mid);
-    void constrain(Real dt);        // joints and locks
+    void constrain(Real dt); // joints and locks
     Vec3 total_force(int b) const;
     Vec3 total_torque(int b) const;
 
