@@ -29,7 +29,7 @@ VtkSeries::VtkSeries(std::string dir, std::string base)
 
 void VtkSeries::write(const particles::ParticleSet& s, Real t) {
     const std::size_t n = std::size_t(s.size());
-    std::vector<float> pos(3 * n), vel(3 * n), acc(3 * n), p(n), rho(n);
+    std::vector<float> pos(3 * n), vel(3 * n), acc(3 * n), p(n), rho(n), mu(n);
     std::vector<std::int32_t> group(n);
     std::vector<std::uint8_t> kind(s.kind);
     std::vector<std::uint64_t> id(s.id);
@@ -45,6 +45,7 @@ void VtkSeries::write(const particles::ParticleSet& s, Real t) {
         acc[3 * i + 2] = float(s.az[i]);
         p[i] = float(s.p[i]);
         rho[i] = float(s.rho[i]);
+        mu[i] = float(s.mu[i]);
         group[i] = s.group[i];
     }
     std::vector<Block> point_data;
@@ -52,6 +53,7 @@ void VtkSeries::write(const particles::ParticleSet& s, Real t) {
     point_data.push_back(make_block("acceleration", "Float32", 3, acc));
     point_data.push_back(make_block("pressure", "Float32", 1, p));
     point_data.push_back(make_block("density", "Float32", 1, rho));
+    point_data.push_back(make_block("apparent_viscosity", "Float32", 1, mu)); // [Pa s]
     point_data.push_back(make_block("type", "UInt8", 1, kind));
     point_data.push_back(make_block("group", "Int32", 1, group));
     point_data.push_back(make_block("id", "UInt64", 1, id));

@@ -14,6 +14,7 @@ using sph::PairState;
 struct ArtificialViscosity {
     static constexpr const char* name = "artificial";
     static constexpr bool needs_velocity_gradient = false;
+    static constexpr bool needs_apparent_viscosity = false;
     static constexpr bool no_slip_walls = false; // uses v_ij as is
     Real alpha = 0.01, boundary_factor = 1, h = 0;
 
@@ -34,6 +35,7 @@ struct ArtificialViscosity {
 struct LaminarViscosity {
     static constexpr const char* name = "laminar";
     static constexpr bool needs_velocity_gradient = false;
+    static constexpr bool needs_apparent_viscosity = false;
     static constexpr bool no_slip_walls = true; // uses v_visc (Morris wall extrapolation)
     Real nu = 1e-6, rho0 = 1000, eta2 = 0;
 
@@ -52,6 +54,7 @@ struct LaminarViscosity {
 struct LaminarSpsViscosity {
     static constexpr const char* name = "laminar_sps";
     static constexpr bool needs_velocity_gradient = true;
+    static constexpr bool needs_apparent_viscosity = false;
     static constexpr bool no_slip_walls = true;
     Real nu = 1e-6, rho0 = 1000, eta2 = 0;
     Real smagorinsky = 0.12, blin = 0.0066; // C_s and C_I of Dalrymple & Rogers

@@ -16,6 +16,7 @@ struct ParticleView {
     Real *ax, *ay, *az;
     Real *rho, *drho, *p, *mass;
     Real *wnx, *wny, *wnz, *wd; // boundary: wall normal into the fluid, depth behind the wall
+    Real* mu;                   // apparent dynamic viscosity [Pa s] (viscous models)
     std::uint8_t* kind;
     std::int16_t* group;
     Index n;
@@ -32,6 +33,7 @@ class ParticleSet {
 public:
     std::vector<Real> x, y, z, vx, vy, vz, ax, ay, az, rho, drho, p, mass;
     std::vector<Real> wnx, wny, wnz, wd;               // zero for fluid particles
+    std::vector<Real> mu; // apparent dynamic viscosity [Pa s]; 0 for artificial viscosity
     std::vector<Real> vx_old, vy_old, vz_old, rho_old; // state at t_(n-1), Verlet scheme only
     std::vector<std::uint8_t> kind;
     std::vector<std::int16_t> group;

@@ -37,12 +37,12 @@ template <class Kernel, class Viscosity, class Diffusion> struct PairTerms {
     // Per-particle data of one side of a pair, loaded once per particle in the pair loops.
     struct Side {
         Vec3 x, v;
-        Real rho, prho, c, m, vol;
+        Real rho, prho, c, m, vol, mu;
         bool fluid;
     };
     DF_HD Side side(Index i) const {
-        return {pv.pos(i), pv.vel(i),  pv.rho[i], prho[i],
-                cs[i],     pv.mass[i], vol[i],    pv.is_fluid(i)};
+        return {pv.pos(i), pv.vel(i), pv.rho[i], prho[i], cs[i],
+                pv.mass[i], vol[i],   pv.mu[i],  pv.is_fluid(i)};
     }
 
     DF_HD Result operator()(Index i, Index j, Vec3 r, Real r2) const {
@@ -66,6 +66,9 @@ template <class Kernel, class Viscosity, class Diffusion> struct PairTerms {
         s.c_i = a.c;
         s.c_j = b.c;
         s.boundary_j = !(a.fluid && b.fluid);
+        // Generalised-Newtonian models: the fluid side's viscosity first when j is a wall.
+        s.mu_i = a.fluid ? a.mu : b.mu;
+        s.mu_j = a.fluid ? b.mu : a.mu;
         if constexpr (Viscosity::no_slip_walls)
             s.v_visc = s.boundary_j ? no_slip_velocity(a.fluid ? b : a, a.fluid ? j : i,
                                                        a.fluid ? a.x : b.x, s.v)

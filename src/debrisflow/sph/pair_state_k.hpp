@@ -16,6 +16,7 @@ struct PairState {
     Real inv_r2_eta2;  // 1 / (r^2 + 0.01 h^2), shared by artificial viscosity and diffusion
     Real rho_i, rho_j;
     Real c_i, c_j;
+    Real mu_i, mu_j; // apparent dynamic viscosities (generalised-Newtonian models only)
     bool boundary_j; // j is a boundary particle
 };
 

@@ -11,6 +11,24 @@ SphModels SphModels::from_params(const SphParams& p) {
             v.alpha = p.alpha;
             v.boundary_factor = p.boundary_factor;
             v.h = p.h;
+        } else if constexpr (V::needs_apparent_viscosity) {
+            const auto& r = p.rheology;
+            v.rho0 = p.rho0;
+            v.eta2 = Real(0.001) * p.h * p.h;
+            v.mu_base = p.rho0 * p.nu;
+            v.mu_max = r.mu_max;
+            if constexpr (std::is_base_of_v<models::HerschelBulkleyViscosity, V>) {
+                v.yield_stress = r.yield_stress;
+                v.consistency = r.consistency;
+                v.flow_index = std::is_same_v<V, models::BinghamViscosity> ? 1 : r.flow_index;
+                v.regularization = r.regularization;
+            } else {
+                v.mu_s = r.mu_s;
+                v.mu_2 = r.mu_2;
+                v.i0 = r.i0;
+                v.grain_diameter = r.grain_diameter;
+                v.grain_density = r.grain_density;
+            }
         } else {
             v.nu = p.nu;
             v.rho0 = p.rho0;

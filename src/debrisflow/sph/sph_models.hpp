@@ -1,14 +1,17 @@
 #pragma once
 #include "debrisflow/kernels/kernel.hpp"
 #include "debrisflow/models/density_diffusion_k.hpp"
+#include "debrisflow/models/rheology_k.hpp"
 #include "debrisflow/models/viscosity_k.hpp"
 #include "debrisflow/sph/sph_params.hpp"
 
 namespace debrisflow::sph {
 
 // Model families of the WCSPH solver, each selectable by name in the case file.
-using ViscosityRegistry = models::Registry<models::ArtificialViscosity, models::LaminarViscosity,
-                                           models::LaminarSpsViscosity>;
+using ViscosityRegistry =
+    models::Registry<models::ArtificialViscosity, models::LaminarViscosity,
+                     models::LaminarSpsViscosity, models::BinghamViscosity,
+                     models::HerschelBulkleyViscosity, models::MuIViscosity>;
 using DiffusionRegistry =
     models::Registry<models::NoDiffusion, models::MolteniColagrossi, models::Fourtakas>;
 using Viscosity = ViscosityRegistry::Variant;

@@ -2,6 +2,7 @@
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/core/stopwatch.hpp"
 #include "debrisflow/exec/parallel.hpp"
+#include "debrisflow/sph/apparent_viscosity_k.hpp"
 #include "debrisflow/sph/interaction_k.hpp"
 #include <cmath>
 #include <fmt/format.h>
@@ -86,8 +87,40 @@ void SphSolver::update_pressure() {
     });
 }
 
+void SphSolver::update_viscosity() {
+    auto pv = set_.view();
+    const auto gv = grid_.view();
+    const Real half_dp = Real(0.5) * params_.dp;
+    std::visit(
+        [&](const auto& kernel, const auto& visc) {
+            using K = std::decay_t<decltype(kernel)>;
+            using V = std::decay_t<decltype(visc)>;
+            if constexpr (V::needs_apparent_viscosity) {
+                exec::for_each(pv.n, ApparentViscosity<K, V>{pv, gv, kernel, visc, half_dp});
+            } else {
+                const Real mu = params_.rho0 * visc.kinematic_viscosity();
+                exec::for_each(pv.n, [=](Index i) { pv.mu[i] = pv.is_fluid(i) ? mu : 0; });
+            }
+        },
+        models_.kernel, models_.viscosity);
+}
+
+Real SphSolver::max_kinematic_viscosity() const {
+    const bool apparent = std::visit(
+        [](const auto& v) { return std::decay_t<decltype(v)>::needs_apparent_viscosity; },
+        models_.viscosity);
+    if (!apparent)
+        return std::visit([](const auto& v) { return v.kinematic_viscosity(); },
+                          models_.viscosity);
+    auto pv = const_cast<particles::ParticleSet&>(set_).view();
+    return exec::max_of(pv.n, [=](Index i) {
+        return pv.is_fluid(i) ? pv.mu[i] / pv.rho[i] : Real(0);
+    });
+}
+
 template <class F> void SphSolver::with_pair_terms(F&& f) {
     update_pressure();
+    update_viscosity();
     const bool sps = std::holds_alternative<models::LaminarSpsViscosity>(models_.viscosity);
     if (sps) compute_sps_stress();
     auto pv = set_.view();
@@ -264,8 +297,7 @@ time::DtLimit SphSolver::stable_dt() const {
         const Real dtf = params_.cfl * std::sqrt(h / amax);
         if (dtf < lim.dt) lim = {dtf, "force"};
     }
-    const Real nu =
-        std::visit([](const auto& v) { return v.kinematic_viscosity(); }, models_.viscosity);
+    const Real nu = max_kinematic_viscosity();
     if (nu > 0) {
         const Real dtv = Real(0.125) * h * h / nu; // Morris et al. 1997, eq. 19
         if (dtv < lim.dt) lim = {dtv, "viscous"};

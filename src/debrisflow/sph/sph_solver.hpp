@@ -55,6 +55,10 @@ private:
     void update_pressure();
     Real boundary_min_density() const;
     void compute_sps_stress();
+    // Per-particle apparent viscosity (generalised-Newtonian models; constant otherwise).
+    void update_viscosity();
+    // Largest kinematic viscosity now (the viscous time-step limit).
+    Real max_kinematic_viscosity() const;
     // Updates pressures (and SPS stresses) and calls f(PairTerms<K, V, D>) for the case's models.
     template <class F> void with_pair_terms(F&& f);
     Real max_displacement() const;
