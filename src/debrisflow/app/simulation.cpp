@@ -2,6 +2,7 @@
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/exec/parallel.hpp"
 #include "debrisflow/io/vtk_writer.hpp"
+#include "debrisflow/probes/flow_probes.hpp"
 #include "debrisflow/scenario/build_bodies.hpp"
 #include "debrisflow/scenario/build_grains.hpp"
 #include "debrisflow/scenario/build_particles.hpp"
@@ -47,6 +48,14 @@ Simulation::Simulation(io::CaseSpec spec) : spec_(std::move(spec)) {
                                          spec_.file, p.dt, stable.dt, stable.limiter, stable.dt));
     }
     for (const auto& p : spec_.probes) probes_.push_back(probes::make_probe(p, spec_));
+    for (const auto& in : spec_.inlets) {
+        inlets_.push_back(std::make_unique<flow::FluidInlet>(in, spec_));
+        probes_.push_back(std::make_unique<probes::InletProbe>(*inlets_.back(), in.every));
+    }
+    for (const auto& out : spec_.outlets) {
+        outlets_.push_back(std::make_unique<flow::Outlet>(out, spec_.sph.rho0));
+        probes_.push_back(std::make_unique<probes::OutletProbe>(*outlets_.back(), out.every));
+    }
 }
 
 probes::Probe& Simulation::probe(const std::string& name) {
@@ -193,6 +202,12 @@ io::RunReport Simulation::run(const RunOptions& opt) {
             log_.line(fmt::format("t = {:.6g} s: wall '{}' removed", s.t, spec_.walls[w].name));
         });
     }
+    // Open boundaries act between the integration and the neighbour search of each step.
+    if (!inlets_.empty() || !outlets_.empty())
+        integ.add_hook(time::Hook::after_integration, [this](const time::StepInfo& s) {
+            for (auto& in : inlets_) in->apply(set_, s.t, s.dt);
+            for (auto& out : outlets_) out->apply(solver_.get(), dem_.get());
+        });
     for (auto& p : probes_) {
         probes::Probe* raw = p.get();
         integ.add_observer(

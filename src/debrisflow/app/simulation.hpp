@@ -1,4 +1,6 @@
 #pragma once
+#include "debrisflow/flow/fluid_inlet.hpp"
+#include "debrisflow/flow/outlet.hpp"
 #include "debrisflow/core/log.hpp"
 #include "debrisflow/dem/dem_solver.hpp"
 #include "debrisflow/io/case_spec.hpp"
@@ -62,6 +64,8 @@ private:
     std::unique_ptr<rigid::BodySolver> rigid_;
     dem::ObstacleSet obstacles_; // grain-body contact link
     bool settled_ = false;
+    std::vector<std::unique_ptr<flow::FluidInlet>> inlets_;
+    std::vector<std::unique_ptr<flow::Outlet>> outlets_;
     std::vector<std::unique_ptr<probes::Probe>> probes_;
     Log log_;
     Real t_ = 0;

@@ -4,19 +4,25 @@
 namespace debrisflow::dem {
 
 void ContactSlots::permute(const std::vector<Index>& perm) {
-    const std::size_t cap = std::size_t(cap_), n = perm.size();
-    if (count_.size() != n) return;
-    std::vector<Index> count(n), partner(n * cap);
+    if (count_.size() != perm.size()) return;
+    remap(perm);
+}
+
+void ContactSlots::remap(const std::vector<Index>& from) {
+    if (count_.empty()) return; // never built: nothing to carry
+    const std::size_t cap = std::size_t(cap_), n = from.size();
+    std::vector<Index> count(n, 0), partner(n * cap);
     std::vector<std::uint32_t> key(n * cap);
     std::vector<ContactHistory> hist(n * cap);
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {
-        const std::size_t from = std::size_t(perm[i]);
-        count[i] = count_[from];
+        if (from[i] < 0) continue;
+        const std::size_t f = std::size_t(from[i]);
+        count[i] = count_[f];
         for (std::size_t k = 0; k < cap; ++k) {
-            partner[i * cap + k] = partner_[from * cap + k];
-            key[i * cap + k] = key_[from * cap + k];
-            hist[i * cap + k] = hist_[from * cap + k];
+            partner[i * cap + k] = partner_[f * cap + k];
+            key[i * cap + k] = key_[f * cap + k];
+            hist[i * cap + k] = hist_[f * cap + k];
         }
     }
     count_.swap(count);

@@ -18,6 +18,9 @@ public:
     // Grows the capacity when a grain overflows it.
     template <class Candidates> void build(Index n, const Candidates& candidates);
     void permute(const std::vector<Index>& perm);
+    // General reindexing: new grain i takes old grain from[i]'s slots; from[i] < 0 is a new
+    // grain without contacts. Used when grains are removed (outlets) or inserted (feeds).
+    void remap(const std::vector<Index>& from);
     void clear_history() { std::fill(hist_.begin(), hist_.end(), ContactHistory{}); }
 
     Index capacity() const { return cap_; }

@@ -441,6 +441,36 @@ void DemSolver::remove_wall(int wall) {
     walls_.walls()[std::size_t(wall)].force = {};
 }
 
+void DemSolver::remove_grains(const std::vector<std::uint8_t>& keep) {
+    std::vector<Index> kept;
+    for (Index i = 0; i < grains_.size(); ++i)
+        if (keep[std::size_t(i)]) kept.push_back(i);
+    if (kept.size() == std::size_t(grains_.size())) return;
+    grains_.select(kept);
+    for (auto* slots : {&grain_slots_, &wall_slots_, &obstacle_slots_}) slots->remap(kept);
+    obstacle_builds_seen_ = -1;
+    rebuild();
+}
+
+void DemSolver::grains_added(Index old_count) {
+    std::vector<Index> from(std::size_t(grains_.size()), -1);
+    for (Index i = 0; i < old_count; ++i) from[std::size_t(i)] = i;
+    for (auto* slots : {&grain_slots_, &wall_slots_, &obstacle_slots_}) slots->remap(from);
+    obstacle_builds_seen_ = -1;
+    // New sizes may need a wider search and a shorter step (the step never grows).
+    for (Real r : grains_.radius) max_radius_ = std::max(max_radius_, r);
+    skin_ = params_.skin * 2 * max_radius_;
+    if (params_.dt <= 0) {
+        std::vector<int> wall_materials;
+        for (const auto& w : walls_.walls()) wall_materials.push_back(w.material);
+        const auto lim = critical_dt(grains_, wall_materials, materials_, table_, params_,
+                                     domain_, params_.safety);
+        if (lim.dt < auto_dt_.dt) auto_dt_ = lim;
+        dt_ = auto_dt_.dt;
+    }
+    rebuild();
+}
+
 void DemSolver::stop_grains() {
     for (auto* v : {&grains_.vel, &grains_.spin}) std::fill(v->begin(), v->end(), Vec3{});
     refresh_hot();

@@ -47,6 +47,10 @@ public:
     void rebuild_now() { rebuild(); }
     // Removes a wall (a gate opening): its contacts end at the next step.
     void remove_wall(int wall);
+    // Removes the grains with keep[i] == 0 (an outlet); contact history of the rest is kept.
+    void remove_grains(const std::vector<std::uint8_t>& keep);
+    // Call after grains were appended to the GrainSet (a feed): they join the contact search.
+    void grains_added(Index old_count);
     // Grains also collide with the spheres of rigid bodies in `o` (null: none).
     void attach_obstacles(ObstacleSet* o) { obstacles_ = o; }
     // Sets every grain's velocity and spin to zero (end of settling).

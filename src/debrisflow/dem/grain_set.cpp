@@ -25,7 +25,7 @@ void GrainSet::set_spin(Index i, Vec3 w) {
 namespace {
 template <class T>
 void apply(std::vector<T>& v, const std::vector<Index>& perm, std::vector<T>& tmp) {
-    tmp.resize(v.size());
+    tmp.resize(perm.size());
     for (std::size_t i = 0; i < perm.size(); ++i) tmp[i] = v[std::size_t(perm[i])];
     v.swap(tmp);
 }
@@ -40,6 +40,10 @@ void GrainSet::permute(const std::vector<Index>& perm) {
     apply(material, perm, t8);
     std::vector<std::uint32_t> t32;
     apply(id, perm, t32);
+}
+
+void GrainSet::select(const std::vector<Index>& kept) {
+    permute(kept); // a permutation onto a subset
 }
 
 GrainView GrainSet::view() {

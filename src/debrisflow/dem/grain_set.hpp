@@ -36,6 +36,8 @@ public:
     void set_spin(Index i, Vec3 w);
     // Applies a new order: element i of the result is old element perm[i].
     void permute(const std::vector<Index>& perm);
+    // Keeps the grains listed in `kept` (old indices, in order); the others are removed.
+    void select(const std::vector<Index>& kept);
     GrainView view();
     Real total_mass() const;
 

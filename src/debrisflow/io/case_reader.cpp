@@ -2,6 +2,7 @@
 #include "debrisflow/io/case_spec.hpp"
 #include "debrisflow/io/config_table.hpp"
 #include "debrisflow/io/dem_reader.hpp"
+#include "debrisflow/io/flow_reader.hpp"
 #include "debrisflow/io/rigid_reader.hpp"
 #include "debrisflow/kernels/kernel.hpp"
 #include "debrisflow/sph/sph_models.hpp"
@@ -224,7 +225,8 @@ CaseSpec read_case(const std::string& path, const std::vector<std::string>& over
     c.dim = int(root.integer("dimensions", 2));
     if (c.dim != 2 && c.dim != 3) root.fail("dimensions", "must be 2 or 3");
     // dp is the fluid particle spacing; a grains-only case may omit it.
-    c.dp = root.tables("fluid").empty() ? root.real("dp", 0) : root.positive("dp");
+    const bool fluid_input = !root.tables("fluid").empty() || !root.tables("inlet").empty();
+    c.dp = fluid_input ? root.positive("dp") : root.real("dp", 0);
 
     auto time = root.table("time");
     if (!time) root.fail("time", "missing required table [time] with key 'end'");
@@ -258,8 +260,8 @@ CaseSpec read_case(const std::string& path, const std::vector<std::string>& over
 
     auto fluid_tables = root.tables("fluid");
     auto sph = root.table("sph");
-    if (!fluid_tables.empty()) {
-        if (!sph) root.fail("sph", "missing table [sph] (the case has [[fluid]] blocks)");
+    if (fluid_input) {
+        if (!sph) root.fail("sph", "missing table [sph] (the case has [[fluid]] or [[inlet]])");
         read_sph(*sph, c);
     } else if (sph) {
         sph->fail("c0", "[sph] given but the case has no [[fluid]]");
@@ -275,6 +277,8 @@ CaseSpec read_case(const std::string& path, const std::vector<std::string>& over
         t.finish();
         c.fluids.push_back(f);
     }
+    read_inlets(root, c);
+    read_outlets(root, c);
     read_dem(root, c);
     c.dem.params.gravity = gravity;
     read_rigid(root, c);

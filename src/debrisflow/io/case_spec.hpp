@@ -133,6 +133,25 @@ struct ProbeSpec {
     Real bed = 0;  // section, runup: bed elevation z [m]
 };
 
+// Fluid entering through the downstream face of a buffer box (`min`-`max`) along `axis`
+// (sign +1 or -1): discharge Q(t) [m^3/s; 2D: m^2/s] piecewise linear in `times` (one value:
+// constant). The buffer is also a [[fluid]] block (index `fluid`) filled at t = 0.
+struct InletSpec {
+    std::string name;
+    Vec3 min, max;
+    int axis = 0, sign = 1;
+    std::vector<Real> times, discharge;
+    Real every = 0.01; // sampling interval of its CSV [s]
+    std::size_t fluid = 0;
+};
+
+// Sink: fluid particles and grains inside the box `min`-`max` are removed and counted.
+struct OutletSpec {
+    std::string name;
+    Vec3 min, max;
+    Real every = 0.01;
+};
+
 struct CaseSpec {
     std::string file;
     std::string name;
@@ -155,6 +174,8 @@ struct CaseSpec {
     RigidSpec rigid;
     bool has_bodies() const { return !rigid.bodies.empty(); }
     std::vector<ProbeSpec> probes;
+    std::vector<InletSpec> inlets;
+    std::vector<OutletSpec> outlets;
     std::string resolved_toml; // the case after --set overrides, for the output folder
 };
 

@@ -353,6 +353,11 @@ void SphSolver::add_timings(time::Timings& t) const {
     t.integration += t_integrate_;
 }
 
+void SphSolver::remove_particles(const std::vector<std::uint8_t>& keep) {
+    set_.compact(keep);
+    list_valid_ = false;
+}
+
 void SphSolver::remove_group(std::int16_t group) {
     std::vector<std::uint8_t> keep(set_.size());
     for (Index i = 0; i < set_.size(); ++i)

@@ -41,6 +41,8 @@ public:
     const particles::ParticleSet& particles() const { return set_; }
     // Removes all boundary particles of wall group `group` (a gate lifting).
     void remove_group(std::int16_t group);
+    // Removes the particles with keep[i] == 0 (an outlet).
+    void remove_particles(const std::vector<std::uint8_t>& keep);
     // Pair-list statistics: builds so far, pairs in the list, kernel support.
     long list_builds() const { return list_builds_; }
     const neighbors::PairList& pair_list() const { return list_; }

@@ -1,0 +1,42 @@
+#pragma once
+#include "debrisflow/io/case_spec.hpp"
+
+namespace debrisflow::sph {
+class SphSolver;
+}
+namespace debrisflow::dem {
+class DemSolver;
+struct Material;
+} // namespace debrisflow::dem
+
+namespace debrisflow::flow {
+
+// A sink: fluid particles and grains found inside the box are removed and counted by phase
+// (mass, and volume at the reference density / the grain's solid density). Rigid bodies are
+// not removed.
+class Outlet {
+public:
+    Outlet(const io::OutletSpec& spec, Real rho0) : spec_(spec), rho0_(rho0) {}
+
+    // Removes what is inside now (either solver may be null).
+    void apply(sph::SphSolver* fluid, dem::DemSolver* grains);
+
+    const std::string& name() const { return spec_.name; }
+    Real fluid_mass() const { return fluid_mass_; }     // [kg] (2D: kg/m)
+    Real fluid_volume() const { return fluid_volume_; } // [m^3] (2D: m^2)
+    Real grain_mass() const { return grain_mass_; }
+    Real grain_volume() const { return grain_volume_; }
+    long grains_removed() const { return grains_removed_; }
+
+private:
+    bool inside(Real x, Real y, Real z) const {
+        return x >= spec_.min.x && x <= spec_.max.x && y >= spec_.min.y && y <= spec_.max.y &&
+               z >= spec_.min.z && z <= spec_.max.z;
+    }
+    io::OutletSpec spec_;
+    Real rho0_;
+    Real fluid_mass_ = 0, fluid_volume_ = 0, grain_mass_ = 0, grain_volume_ = 0;
+    long grains_removed_ = 0;
+};
+
+} // namespace debrisflow::flow

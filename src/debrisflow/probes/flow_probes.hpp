@@ -1,0 +1,48 @@
+#pragma once
+#include "debrisflow/flow/fluid_inlet.hpp"
+#include "debrisflow/flow/outlet.hpp"
+#include "debrisflow/probes/probe.hpp"
+
+namespace debrisflow::probes {
+
+// probes/<inlet>.csv: the imposed discharge and what has entered.
+class InletProbe : public Probe {
+public:
+    InletProbe(const flow::FluidInlet& inlet, Real every)
+        : Probe(inlet.name(), every), inlet_(inlet) {}
+    std::vector<std::string> columns() const override {
+        return {"Q [m3/s]", "U [m/s]", "mass_in [kg]", "volume_in [m3]"};
+    }
+    std::vector<Real> sample(Real t, const ProbeContext&) override {
+        return {inlet_.discharge(t), inlet_.velocity(t), inlet_.mass_in(), inlet_.volume_in()};
+    }
+
+private:
+    const flow::FluidInlet& inlet_;
+};
+
+// probes/<outlet>.csv: cumulative mass and volume removed by phase, and the mean rates over the
+// sampling interval (what left per second).
+class OutletProbe : public Probe {
+public:
+    OutletProbe(const flow::Outlet& outlet, Real every)
+        : Probe(outlet.name(), every), outlet_(outlet) {}
+    std::vector<std::string> columns() const override {
+        return {"fluid_mass [kg]",  "fluid_volume [m3]", "grain_mass [kg]",
+                "grain_volume [m3]", "fluid_rate [kg/s]", "grain_rate [kg/s]"};
+    }
+    std::vector<Real> sample(Real t, const ProbeContext&) override {
+        const Real dt = t - t_last_;
+        const Real qf = dt > 0 ? (outlet_.fluid_mass() - fluid_last_) / dt : 0;
+        const Real qg = dt > 0 ? (outlet_.grain_mass() - grain_last_) / dt : 0;
+        t_last_ = t, fluid_last_ = outlet_.fluid_mass(), grain_last_ = outlet_.grain_mass();
+        return {outlet_.fluid_mass(), outlet_.fluid_volume(), outlet_.grain_mass(),
+                outlet_.grain_volume(), qf, qg};
+    }
+
+private:
+    const flow::Outlet& outlet_;
+    Real t_last_ = 0, fluid_last_ = 0, grain_last_ = 0;
+};
+
+} // namespace debrisflow::probes
