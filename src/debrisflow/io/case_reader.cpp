@@ -4,6 +4,7 @@
 #include "debrisflow/io/dem_reader.hpp"
 #include "debrisflow/io/flow_reader.hpp"
 #include "debrisflow/io/rigid_reader.hpp"
+#include "debrisflow/io/structure_reader.hpp"
 #include "debrisflow/kernels/kernel.hpp"
 #include "debrisflow/sph/sph_models.hpp"
 #include <algorithm>
@@ -155,10 +156,14 @@ ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
     ProbeSpec p;
     p.name = t.string("name");
     p.type = t.choice("type", {"pressure", "gauge", "velocity", "front", "wall_force", "section",
-                               "kinetic_energy", "runup", "mass_flux", "body"});
+                               "kinetic_energy", "runup", "mass_flux", "body", "discharge",
+                               "trapping", "deposit", "flow_section", "fluid_runup",
+                               "pressure_map"});
     p.every = t.positive("every", 0.001);
-    const bool fluid_probe =
-        p.type == "pressure" || p.type == "velocity" || p.type == "gauge" || p.type == "front";
+    const bool fluid_probe = p.type == "pressure" || p.type == "velocity" ||
+                             p.type == "gauge" || p.type == "front" ||
+                             p.type == "flow_section" || p.type == "fluid_runup" ||
+                             p.type == "pressure_map";
     if (fluid_probe && c.fluids.empty()) t.fail("type", "a " + p.type + " probe needs a fluid");
     const bool grain_probe = p.type == "section" || p.type == "kinetic_energy" ||
                              p.type == "runup" || p.type == "mass_flux";
@@ -177,7 +182,27 @@ ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
         for (int d = 0; d < 3; ++d)
             if (!(p.max[d] > p.min[d])) t.fail("max", "must exceed min");
         if (p.type == "section") p.bed = t.real("bed", p.min.z);
-    } else if (p.type == "mass_flux") {
+    } else if (p.type == "flow_section" || p.type == "deposit") {
+        p.min = t.vec3("min", c.dim);
+        p.max = t.vec3("max", c.dim);
+        if (c.dim == 2) p.min.y = -1e30, p.max.y = 1e30;
+        for (int d = 0; d < 3; ++d)
+            if (!(p.max[d] > p.min[d])) t.fail("max", "must exceed min");
+        p.bed = t.real("bed", p.min.z);
+    } else if (p.type == "trapping") {
+        if (!c.has_dem && !c.has_bodies()) t.fail("type", "a trapping probe needs grains or bodies");
+        p.position = t.vec3("upstream", c.dim);
+        p.point_b = t.vec3("downstream", c.dim);
+        p.normal = t.vec3("normal", c.dim, {1, 0, 0});
+        if (norm(p.normal) == 0) t.fail("normal", "must be a non-zero vector");
+        p.normal = (1 / norm(p.normal)) * p.normal;
+        if (!(dot(p.point_b - p.position, p.normal) > 0))
+            t.fail("downstream", "must lie downstream (along normal) of the upstream plane");
+        const auto w = t.reals("window");
+        if (w.size() != 2 || !(w[1] > w[0]) || w[0] < 0)
+            t.fail("window", "expected [t_start, t_end] with t_end > t_start >= 0 [s]");
+        p.t0 = w[0], p.t1 = w[1];
+    } else if (p.type == "mass_flux" || p.type == "discharge") {
         p.position = t.vec3("point", c.dim);
         p.normal = t.vec3("normal", c.dim);
         if (norm(p.normal) == 0) t.fail("normal", "must be a non-zero vector");
@@ -193,6 +218,17 @@ ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
         if (p.type == "wall_force") {
             p.normal = t.vec3("normal", c.dim, {});
             if (norm(p.normal) > 0) p.normal = (1 / norm(p.normal)) * p.normal;
+        } else if (p.type == "pressure_map") {
+            const std::string a = t.choice("axis", {"x", "y", "z"}, "x");
+            p.axis = a == "x" ? 0 : (a == "y" ? 1 : 2);
+            p.normal = t.vec3("normal", c.dim, {});
+            if (!(std::abs(norm(p.normal) - 1) < 1e-9) || std::abs(p.normal[p.axis]) != 1)
+                t.fail("normal", "must be the unit vector along axis, pointing into the fluid");
+            const auto n = t.reals("panels");
+            if (n.size() != 2 || n[0] < 1 || n[1] < 1)
+                t.fail("panels", "expected [n_u, n_v] (>= 1) panels over the face");
+            p.panels_u = int(n[0]), p.panels_v = int(n[1]);
+            if (c.dim == 2) p.panels_u = p.axis == 2 ? p.panels_u : 1;
         } else {
             p.bed = t.real("bed", c.domain.lo.z);
         }
@@ -252,6 +288,7 @@ CaseSpec read_case(const std::string& path, const std::vector<std::string>& over
         physics->finish();
     }
     if (c.dim == 2) gravity.y = 0;
+    gravity = flume_gravity(root, gravity); // a flume's slope tilts gravity
     c.sph.gravity = gravity;
 
     auto domain = root.table("domain");
@@ -323,6 +360,8 @@ CaseSpec read_case(const std::string& path, const std::vector<std::string>& over
         t.finish();
         c.walls.push_back(w);
     }
+
+    read_structures(root, c);
 
     for (const auto& t : root.tables("probe")) {
         c.probes.push_back(read_probe(t, c));

@@ -41,6 +41,10 @@ struct WallSpec {
     std::optional<Real> remove_at;
     std::string material; // DEM: contact material ("" = the grain's own)
     Vec3 velocity;        // DEM: prescribed translation velocity [m/s]
+    // type "boxes": a union of solid boxes {min, max} forming one named wall (structures)
+    std::vector<std::array<Vec3, 2>> boxes;
+    std::string structure; // the [[structure]] type that produced it ("" for [[wall]])
+    Real slit_density = 0; // slit dams: sum of openings / dam width
 };
 
 // Grain sizes: "mono" (diameter), "lognormal" (median d50, log-standard deviation sigma) or
@@ -131,6 +135,9 @@ struct ProbeSpec {
     Vec3 normal;   // wall_force: direction of the normal component; mass_flux: plane normal
     Vec3 min, max; // kinetic_energy: box; section: window
     Real bed = 0;  // section, runup: bed elevation z [m]
+    Vec3 point_b;  // trapping: the downstream plane's point (position: the upstream one)
+    Real t0 = 0, t1 = 1e30;    // trapping: counting window [s]
+    int panels_u = 1, panels_v = 1; // pressure_map: panels along the face's two axes
 };
 
 // Fluid entering through the downstream face of a buffer box (`min`-`max`) along `axis`

@@ -2,6 +2,7 @@
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/probes/body_probe.hpp"
 #include "debrisflow/probes/dem_probes.hpp"
+#include "debrisflow/probes/flow_instruments.hpp"
 #include "debrisflow/probes/sph_probes.hpp"
 #include "debrisflow/probes/wall_force_probe.hpp"
 #include <filesystem>
@@ -62,9 +63,16 @@ std::unique_ptr<Probe> make_probe(const io::ProbeSpec& s, const io::CaseSpec& c)
     if (s.type == "kinetic_energy") return std::make_unique<KineticEnergyProbe>(s);
     if (s.type == "mass_flux") return std::make_unique<MassFluxProbe>(s);
     if (s.type == "body") return std::make_unique<BodyProbe>(s, c);
+    if (s.type == "discharge") return std::make_unique<DischargeProbe>(s, c);
+    if (s.type == "trapping") return std::make_unique<TrappingProbe>(s, c);
+    if (s.type == "deposit") return std::make_unique<DepositProbe>(s, c);
+    if (s.type == "flow_section") return std::make_unique<FlowSectionProbe>(s, c);
     for (std::size_t w = 0; w < c.walls.size(); ++w) {
         if (c.walls[w].name != s.wall) continue;
         if (s.type == "runup") return std::make_unique<RunupProbe>(s, int(w));
+        if (s.type == "fluid_runup") return std::make_unique<FluidRunupProbe>(s, c.walls[w], c);
+        if (s.type == "pressure_map")
+            return std::make_unique<PressureMapProbe>(s, int(w), c.walls[w], c);
         return std::make_unique<WallForceProbe>(s, int(w), c);
     }
     throw InputError("probe '" + s.name + "': unknown wall '" + s.wall + "'");

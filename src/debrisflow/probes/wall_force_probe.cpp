@@ -8,7 +8,7 @@ namespace debrisflow::probes {
 WallForceProbe::WallForceProbe(const io::ProbeSpec& s, int wall, const io::CaseSpec& c)
     : Probe(s.name, s.every), wall_(wall), normal_(s.normal),
       unit_(c.dim == 2 && !c.fluids.empty() ? "N/m" : "N"), grains_(c.has_dem),
-      bodies_(c.has_bodies()) {}
+      bodies_(c.has_bodies()), fluid_(!c.fluids.empty()) {}
 
 std::vector<std::string> WallForceProbe::columns() const {
     std::vector<std::string> c{"Fx [" + unit_ + "]", "Fy [" + unit_ + "]", "Fz [" + unit_ + "]",
@@ -25,17 +25,25 @@ std::vector<std::string> WallForceProbe::columns() const {
     if (bodies_)
         for (const char* a : {"x", "y", "z"})
             c.push_back(std::string("F") + a + "_bodies [" + unit_ + "]");
+    if (fluid_ && (grains_ || bodies_)) { // the split by source
+        for (const char* a : {"x", "y", "z"})
+            c.push_back(std::string("F") + a + "_fluid [" + unit_ + "]");
+        if (grains_)
+            for (const char* a : {"x", "y", "z"})
+                c.push_back(std::string("F") + a + "_grains [" + unit_ + "]");
+    }
     return c;
 }
 
 std::vector<Real> WallForceProbe::sample(Real, const ProbeContext& ctx) {
-    Vec3 f, avg;
+    Vec3 f, avg, ff, fg;
     if (ctx.sph) {
-        f = fluid_wall_force(*ctx.sph, wall_);
+        f = ff = fluid_wall_force(*ctx.sph, wall_);
         avg = f;
     }
     if (ctx.dem) {
         auto& w = ctx.dem->walls().walls()[std::size_t(wall_)];
+        fg = w.force;
         f += w.force;
         avg += w.impulse_time > 0 ? (1 / w.impulse_time) * w.impulse : w.force;
         w.impulse = {};
@@ -57,6 +65,10 @@ std::vector<Real> WallForceProbe::sample(Real, const ProbeContext& ctx) {
         out.insert(out.end(), {m.x, m.y, m.z});
     }
     if (bodies_) out.insert(out.end(), {fb.x, fb.y, fb.z});
+    if (fluid_ && (grains_ || bodies_)) {
+        out.insert(out.end(), {ff.x, ff.y, ff.z});
+        if (grains_) out.insert(out.end(), {fg.x, fg.y, fg.z});
+    }
     return out;
 }
 

@@ -10,7 +10,8 @@ namespace debrisflow::probes {
 // at the contact frequency, the averaged one is what a load cell of that bandwidth reads).
 // With grains, also the grains' moment on the wall about its origin (plane point, box or mesh
 // centre). With rigid bodies, their contact force on the wall is included and also
-// reported alone (F*_bodies).
+// reported alone (F*_bodies). With a fluid and solids, the fluid part (F*_fluid) and the grain
+// part (F*_grains) are also given alone: the split by source.
 class WallForceProbe : public Probe {
 public:
     WallForceProbe(const io::ProbeSpec& s, int wall, const io::CaseSpec& c);
@@ -21,7 +22,7 @@ private:
     int wall_;
     Vec3 normal_;
     std::string unit_;
-    bool grains_, bodies_;
+    bool grains_, bodies_, fluid_;
 };
 
 } // namespace debrisflow::probes

@@ -289,6 +289,13 @@ void build_dem_walls(const io::CaseSpec& c, dem::WallSet& walls) {
         } else if (w.type == "box") {
             box_faces(prims, lo, hi, true, true, true, c.dim == 3);
             wall.origin = Real(0.5) * (lo + hi);
+        } else if (w.type == "boxes") {
+            for (const auto& b : w.boxes) {
+                Vec3 blo = b[0], bhi = b[1];
+                if (c.dim == 2) blo.y = -1, bhi.y = 1;
+                box_faces(prims, blo, bhi, true, true, true, c.dim == 3);
+            }
+            wall.origin = Real(0.5) * (lo + hi);
         } else if (w.type == "open_tank") {
             box_faces(prims, lo, hi, true, false, true, c.dim == 3);
             wall.origin = Real(0.5) * (lo + hi);

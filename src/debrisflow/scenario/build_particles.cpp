@@ -94,7 +94,17 @@ std::vector<WallPoint> mesh_wall(const io::ShapeSpec& s, Real dp, int layers) {
 // Normal into the fluid and depth behind the surface of the wall point p.
 WallPoint wall_point(const io::WallSpec& w, const io::CaseSpec& c, Vec3 p) {
     if (w.type == "plane") return {p, w.normal, -dot(p - w.point, w.normal)};
-    const Vec3 lo = w.shape.min, hi = w.shape.max;
+    Vec3 lo = w.shape.min, hi = w.shape.max;
+    if (w.type == "boxes") // the box holding p (the nearest, for points on shared faces)
+        for (const auto& b : w.boxes) {
+            bool in = true;
+            for (int d = 0; d < 3; ++d)
+                if (!(c.dim == 2 && d == 1)) in = in && p[d] >= b[0][d] && p[d] <= b[1][d];
+            if (in) {
+                lo = b[0], hi = b[1];
+                break;
+            }
+        }
     if (w.type == "open_tank") {
         Vec3 q = p; // nearest point of the inner (fluid) region
         for (int d = 0; d < 3; ++d) {
@@ -124,16 +134,34 @@ std::vector<WallPoint> build_wall(const io::WallSpec& w, const io::CaseSpec& c) 
     std::vector<Vec3> pts;
     if (w.type == "open_tank") {
         pts = tank_walls(w.shape.min, w.shape.max, dp, c.dim, w.layers, false);
-    } else if (w.type == "box") {
+    } else if (w.type == "box" || w.type == "boxes") {
         const Real skin = w.layers * dp;
-        pts = lattice(w.shape.min, w.shape.max, w.shape.min, dp, c.dim, [&](Vec3 p) {
-            Real depth = std::numeric_limits<Real>::max();
-            for (int d = 0; d < 3; ++d) {
-                if (c.dim == 2 && d == 1) continue;
-                depth = std::min({depth, p[d] - w.shape.min[d], w.shape.max[d] - p[d]});
+        const std::vector<std::array<Vec3, 2>> boxes =
+            w.type == "box" ? std::vector<std::array<Vec3, 2>>{{w.shape.min, w.shape.max}}
+                            : w.boxes;
+        // Particles of a box covered by an earlier box are left out (no doubles at joints).
+        auto inside = [&](Vec3 p, std::size_t upto) {
+            for (std::size_t k = 0; k < upto; ++k) {
+                bool in = true;
+                for (int d = 0; d < 3; ++d)
+                    if (!(c.dim == 2 && d == 1))
+                        in = in && p[d] > boxes[k][0][d] && p[d] < boxes[k][1][d];
+                if (in) return true;
             }
-            return depth < skin;
-        });
+            return false;
+        };
+        for (std::size_t k = 0; k < boxes.size(); ++k) {
+            const Vec3 lo = boxes[k][0], hi = boxes[k][1];
+            auto part = lattice(lo, hi, lo, dp, c.dim, [&](Vec3 p) {
+                Real depth = std::numeric_limits<Real>::max();
+                for (int d = 0; d < 3; ++d) {
+                    if (c.dim == 2 && d == 1) continue;
+                    depth = std::min({depth, p[d] - lo[d], hi[d] - p[d]});
+                }
+                return depth < skin && !inside(p, k);
+            });
+            pts.insert(pts.end(), part.begin(), part.end());
+        }
     } else if (w.type == "plane") {
         const Real thick = w.layers * dp;
         pts = lattice(c.domain.lo, c.domain.hi, w.point, dp, c.dim, [&](Vec3 p) {

@@ -1,0 +1,220 @@
+#include "debrisflow/probes/flow_instruments.hpp"
+#include "debrisflow/dem/dem_solver.hpp"
+#include "debrisflow/rigid/body_solver.hpp"
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+namespace debrisflow::probes {
+
+namespace {
+bool in_box(Vec3 p, Vec3 lo, Vec3 hi) {
+    return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y && p.z >= lo.z && p.z <= hi.z;
+}
+// Half the domain's extent along the plane normal's dominant axis.
+Real half_extent(const io::CaseSpec& c, Vec3 n) {
+    int a = 0;
+    for (int k = 1; k < 3; ++k)
+        if (std::abs(n[k]) > std::abs(n[a])) a = k;
+    return Real(0.5) * (c.domain.hi[a] - c.domain.lo[a]);
+}
+constexpr std::uint64_t body_key = std::uint64_t(1) << 40;
+} // namespace
+
+void SolidCrossing::cross(std::uint64_t key, Vec3 x, Real m, Real v) {
+    const Real s = dot(x - point_, n_);
+    auto it = last_.find(key);
+    if (it != last_.end()) {
+        const Real prev = it->second;
+        const bool wrapped = std::abs(s - prev) > wrap_;
+        if (!wrapped && (prev < 0) != (s < 0)) {
+            const Real sign = s >= 0 ? 1 : -1;
+            mass_ += sign * m;
+            volume_ += sign * v;
+        }
+        it->second = s;
+    } else {
+        last_.emplace(key, s);
+    }
+}
+
+void SolidCrossing::update(const ProbeContext& ctx) {
+    if (ctx.dem) {
+        const auto& g = ctx.dem->grains();
+        const auto& mats = ctx.dem->materials();
+        for (Index i = 0; i < g.size(); ++i) {
+            const std::size_t k = std::size_t(i);
+            cross(g.id[k], g.pos[k], g.mass[k], g.mass[k] / mats[g.material[k]].density);
+        }
+    }
+    if (ctx.rigid) {
+        const auto& b = ctx.rigid->bodies();
+        const auto& m = ctx.rigid->models();
+        for (std::size_t k = 0; k < b.size(); ++k)
+            cross(body_key + k, b[k].pos, b[k].mass, m[k].volume);
+    }
+}
+
+DischargeProbe::DischargeProbe(const io::ProbeSpec& s, const io::CaseSpec& c)
+    : Probe(s.name, s.every), point_(s.position), n_(s.normal), dp_(c.dp), rho0_(c.sph.rho0),
+      fluid_(!c.fluids.empty()), solids_(c.has_dem || c.has_bodies()),
+      unit_(c.dim == 2 ? "/m" : ""), solid_(s.position, s.normal, half_extent(c, s.normal)) {}
+
+std::vector<std::string> DischargeProbe::columns() const {
+    std::vector<std::string> c;
+    if (fluid_)
+        c.insert(c.end(), {"fluid [kg/s" + unit_ + "]", "fluid_Q [m3/s" + unit_ + "]",
+                           "fluid_cumulative [kg" + unit_ + "]"});
+    if (solids_)
+        c.insert(c.end(), {"solid [kg/s" + unit_ + "]", "solid_Q [m3/s" + unit_ + "]",
+                           "solid_cumulative [kg" + unit_ + "]"});
+    return c;
+}
+
+std::vector<Real> DischargeProbe::sample(Real t, const ProbeContext& ctx) {
+    std::vector<Real> out;
+    const Real dt = started_ ? t - t_last_ : 0;
+    if (fluid_) {
+        const auto& s = ctx.sph->particles();
+        Real rate = 0;
+        const Index n = s.size();
+        const Vec3 p0 = point_, nn = n_;
+        const Real half = Real(0.5) * dp_;
+#pragma omp parallel for reduction(+ : rate)
+        for (Index i = 0; i < n; ++i) {
+            if (s.kind[i] != 0) continue;
+            const Real d = (s.x[i] - p0.x) * nn.x + (s.y[i] - p0.y) * nn.y + (s.z[i] - p0.z) * nn.z;
+            if (d < -half || d >= half) continue;
+            rate += s.mass[i] * (s.vx[i] * nn.x + s.vy[i] * nn.y + s.vz[i] * nn.z);
+        }
+        rate /= dp_;
+        fluid_cum_ += Real(0.5) * (rate + fluid_rate_last_) * dt; // trapezoid in time
+        fluid_rate_last_ = rate;
+        out.insert(out.end(), {rate, rate / rho0_, fluid_cum_});
+    }
+    if (solids_) {
+        solid_.update(ctx);
+        const Real rate = dt > 0 ? (solid_.mass() - solid_last_) / dt : 0;
+        const Real q = dt > 0 ? (solid_.volume() - solid_vol_last_) / dt : 0;
+        solid_last_ = solid_.mass(), solid_vol_last_ = solid_.volume();
+        out.insert(out.end(), {rate, q, solid_.mass()});
+    }
+    t_last_ = t;
+    started_ = true;
+    return out;
+}
+
+TrappingProbe::TrappingProbe(const io::ProbeSpec& s, const io::CaseSpec& c)
+    : Probe(s.name, s.every), up_(s.position, s.normal, half_extent(c, s.normal)),
+      down_(s.point_b, s.normal, half_extent(c, s.normal)), t0_(s.t0), t1_(s.t1) {}
+
+std::vector<Real> TrappingProbe::sample(Real t, const ProbeContext& ctx) {
+    up_.update(ctx);
+    down_.update(ctx);
+    if (t >= t0_ && !opened_) {
+        up0_ = up_.mass(), down0_ = down_.mass();
+        opened_ = true;
+    }
+    if (opened_ && t <= t1_ + 1e-12) {
+        up_w_ = up_.mass() - up0_;
+        down_w_ = down_.mass() - down0_;
+    }
+    const Real e = up_w_ > 0 ? 1 - down_w_ / up_w_ : 0;
+    return {up_w_, down_w_, e};
+}
+
+std::vector<Real> DepositProbe::sample(Real, const ProbeContext& ctx) {
+    Real vs = 0, ms = 0, vf = 0;
+    if (ctx.dem) {
+        const auto& g = ctx.dem->grains();
+        const auto& mats = ctx.dem->materials();
+        for (Index i = 0; i < g.size(); ++i) {
+            const std::size_t k = std::size_t(i);
+            if (!in_box(g.pos[k], lo_, hi_)) continue;
+            ms += g.mass[k];
+            vs += g.mass[k] / mats[g.material[k]].density;
+        }
+    }
+    if (ctx.rigid)
+        for (std::size_t k = 0; k < ctx.rigid->bodies().size(); ++k)
+            if (in_box(ctx.rigid->bodies()[k].pos, lo_, hi_)) {
+                ms += ctx.rigid->bodies()[k].mass;
+                vs += ctx.rigid->models()[k].volume;
+            }
+    if (ctx.sph) {
+        const auto& s = ctx.sph->particles();
+        for (Index i = 0; i < s.size(); ++i)
+            if (s.kind[i] == 0 && in_box({s.x[i], s.y[i], s.z[i]}, lo_, hi_))
+                vf += s.mass[i] / rho0_;
+    }
+    return {vs, ms, vf};
+}
+
+std::vector<Real> FlowSectionProbe::sample(Real, const ProbeContext& ctx) {
+    const auto& s = ctx.sph->particles();
+    std::vector<Real> tops;
+    Real u = 0;
+    for (Index i = 0; i < s.size(); ++i) {
+        if (s.kind[i] != 0 || !in_box({s.x[i], s.y[i], s.z[i]}, lo_, hi_)) continue;
+        tops.push_back(s.z[i] + Real(0.5) * dp_ - bed_);
+        u += s.vx[i];
+    }
+    if (tops.empty()) return {0, 0, 0, 0};
+    std::sort(tops.begin(), tops.end());
+    const Real h = tops[std::min(tops.size() - 1, std::size_t(0.95 * Real(tops.size())))];
+    const Real v = u / Real(tops.size());
+    const Real g = norm(gravity_), cos_t = g > 0 ? std::abs(gravity_.z) / g : 1;
+    const Real fr = h > 0 && g > 0 ? v / std::sqrt(g * h * cos_t) : 0;
+    return {h, v, v * h, fr};
+}
+
+std::vector<Real> FluidRunupProbe::sample(Real, const ProbeContext& ctx) {
+    const auto& s = ctx.sph->particles();
+    const Real m = 2 * dp_;
+    Real top = 0;
+    for (Index i = 0; i < s.size(); ++i) {
+        if (s.kind[i] != 0) continue;
+        if (s.x[i] < lo_.x - m || s.x[i] > hi_.x + m) continue;
+        if (dim_ == 3 && (s.y[i] < lo_.y - m || s.y[i] > hi_.y + m)) continue;
+        top = std::max(top, s.z[i] + Real(0.5) * dp_ - bed_);
+    }
+    return {top};
+}
+
+PressureMapProbe::PressureMapProbe(const io::ProbeSpec& s, int wall, const io::WallSpec& w,
+                                   const io::CaseSpec& c)
+    : Probe(s.name, s.every), wall_(wall), axis_(s.axis), nu_(s.panels_u), nv_(s.panels_v),
+      normal_(s.normal), lo_(w.shape.min), hi_(w.shape.max), dim_(c.dim) {
+    // The face's axes: the two others in order (2D: u = the in-plane one, v = y, one panel).
+    const int others[3][2] = {{1, 2}, {0, 2}, {0, 1}};
+    u_ = others[axis_][0], v_ = others[axis_][1];
+    if (dim_ == 2) {
+        u_ = axis_ == 0 ? 2 : 0, v_ = 1, nv_ = 1;
+        lo_.y = Real(-0.5), hi_.y = Real(0.5);
+    }
+}
+
+std::vector<std::string> PressureMapProbe::columns() const {
+    std::vector<std::string> c;
+    for (int i = 0; i < nu_; ++i)
+        for (int j = 0; j < nv_; ++j) c.push_back(fmt::format("p_{}_{} [Pa]", i, j));
+    return c;
+}
+
+std::vector<Real> PressureMapProbe::sample(Real, const ProbeContext& ctx) {
+    const auto& s = ctx.sph->particles();
+    std::vector<Real> f(std::size_t(nu_ * nv_), 0);
+    const Real du = (hi_[u_] - lo_[u_]) / nu_, dv = (hi_[v_] - lo_[v_]) / nv_;
+    for (Index i = 0; i < s.size(); ++i) {
+        if (s.kind[i] == 0 || s.group[i] != wall_) continue;
+        const Vec3 x{s.x[i], s.y[i], s.z[i]};
+        const int iu = std::clamp(int((x[u_] - lo_[u_]) / du), 0, nu_ - 1);
+        const int iv = dim_ == 2 ? 0 : std::clamp(int((x[v_] - lo_[v_]) / dv), 0, nv_ - 1);
+        const Vec3 a{s.ax[i], s.ay[i], s.az[i]};
+        f[std::size_t(iu * nv_ + iv)] -= s.mass[i] * dot(a, normal_);
+    }
+    for (auto& p : f) p /= du * dv;
+    return f;
+}
+
+} // namespace debrisflow::probes

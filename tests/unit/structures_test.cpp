@@ -1,0 +1,195 @@
+// Structure builders ([[structure]]): geometry from parameters (issue #5), each structure one
+// named wall for both the SPH (boundary particles) and the DEM (exact faces).
+#include "debrisflow/core/error.hpp"
+#include "run_case.hpp"
+#include <cmath>
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+using namespace debrisflow;
+
+namespace {
+const char* grains_header = R"(
+dimensions = 3
+[time]
+end = 0.01
+[domain]
+min = [-0.5, -0.2, -0.2]
+max = [3.0, 0.8, 1.0]
+[[material]]
+name = "rock"
+law = "hertz_mindlin"
+density = 2650
+youngs_modulus = 1e7
+poisson = 0.3
+restitution = 0.5
+friction = 0.5
+[[grains]]
+name = "g"
+material = "rock"
+packing = "single"
+position = [0.2, 0.3, 0.3]
+diameter = 0.02
+)";
+} // namespace
+
+TEST(Structures, SlitDamPostsAndSlitDensity) {
+    const auto c = test::case_from_toml("slit_dam", std::string(grains_header) + R"(
+[[structure]]
+name = "dam"
+type = "slit_dam"
+position = 1.5
+thickness = 0.05
+height = 0.3
+width = 0.5
+slits = 3
+slit_width = 0.05
+)");
+    ASSERT_EQ(c.walls.size(), 1u);
+    const auto& w = c.walls[0];
+    // 3 slits of 0.05 m in 0.5 m: 4 posts of (0.5 - 0.15) / 4 = 0.0875 m; density 0.3.
+    ASSERT_EQ(w.boxes.size(), 4u);
+    EXPECT_NEAR(w.slit_density, 0.3, 1e-12);
+    for (std::size_t k = 0; k < 4; ++k) {
+        EXPECT_NEAR(w.boxes[k][1].y - w.boxes[k][0].y, 0.0875, 1e-12);
+        EXPECT_NEAR(w.boxes[k][0].y, k * (0.0875 + 0.05), 1e-12);
+        EXPECT_NEAR(w.boxes[k][1].x - w.boxes[k][0].x, 0.05, 1e-12);
+    }
+    app::Simulation sim(c);
+    // 4 boxes x 6 faces x 2 triangles in the DEM wall set.
+    EXPECT_EQ(sim.grains().walls().primitives().size(), 48u);
+    EXPECT_EQ(sim.grains().walls().walls()[0].name, "dam");
+}
+
+TEST(Structures, SlitDamP2CapsAndErrors) {
+    const auto c = test::case_from_toml("slit_p2", std::string(grains_header) + R"(
+[[structure]]
+name = "dam"
+type = "slit_dam"
+post = "P2"
+cap_width = 0.12
+cap_depth = 0.02
+position = 1.5
+thickness = 0.05
+height = 0.3
+width = 0.5
+slits = 3
+slit_width = 0.05
+)");
+    ASSERT_EQ(c.walls[0].boxes.size(), 8u); // a post and its upstream cap, 4 times
+    EXPECT_NEAR(c.walls[0].boxes[1][0].x, 1.5 - 0.02, 1e-12);
+    EXPECT_THROW(test::case_from_toml("slit_bad", std::string(grains_header) + R"(
+[[structure]]
+name = "dam"
+type = "slit_dam"
+position = 1.5
+thickness = 0.05
+height = 0.3
+width = 0.5
+slits = 10
+slit_width = 0.05
+)"),
+                 InputError);
+}
+
+TEST(Structures, StaggeredBafflesFlumeSlopeAndHopper) {
+    const auto c = test::case_from_toml("baffles", std::string(grains_header) + R"(
+[[structure]]
+name = "flume"
+type = "flume"
+start = -0.4
+length = 3.3
+width = 0.6
+wall_height = 0.5
+slope_percent = 20
+roughness_height = 0.01
+roughness_spacing = 0.5
+[[structure]]
+name = "baffles"
+type = "baffles"
+position = 1.0
+rows = 3
+per_row = 3
+row_spacing = 0.3
+lateral_spacing = 0.2
+center_y = 0.3
+size = [0.05, 0.08, 0.15]
+[[structure]]
+name = "hopper"
+type = "hopper"
+min = [0.0, 0.1, 0.6]
+max = [0.3, 0.5, 0.9]
+orifice = 0.06
+)");
+    // 20 % slope: gravity tilted by atan(0.2).
+    const double a = std::atan(0.2);
+    EXPECT_NEAR(c.dem.params.gravity.x, 9.81 * std::sin(a), 1e-9);
+    EXPECT_NEAR(c.dem.params.gravity.z, -9.81 * std::cos(a), 1e-9);
+    ASSERT_EQ(c.walls.size(), 3u);
+    // Flume: bed + 2 side walls + ribs at -0.15, 0.35, ..., 2.85 (7 ribs).
+    EXPECT_EQ(c.walls[0].boxes.size(), 3u + 7u);
+    // Baffles: 3 + 2 + 3, the middle row shifted by half the lateral spacing.
+    const auto& b = c.walls[1].boxes;
+    ASSERT_EQ(b.size(), 8u);
+    EXPECT_NEAR(0.5 * (b[0][0].y + b[0][1].y), 0.1, 1e-12);
+    EXPECT_NEAR(0.5 * (b[3][0].y + b[3][1].y), 0.2, 1e-12);
+    EXPECT_NEAR(b[3][0].x, 1.3, 1e-12);
+    // Hopper: 4 side plates and a floor in two parts around the 6 cm slot.
+    const auto& h = c.walls[2].boxes;
+    ASSERT_EQ(h.size(), 6u);
+    EXPECT_NEAR(h[5][0].x - h[4][1].x, 0.06, 1e-12);
+}
+
+TEST(Structures, CheckDamIsOneWallForFluidAndGrains) {
+    app::Simulation sim(test::case_from_toml("check_dam", R"(
+dimensions = 2
+dp = 0.01
+[time]
+end = 0.001
+[domain]
+min = [-0.1, -0.1]
+max = [1.1, 0.6]
+[sph]
+c0 = 20
+[[material]]
+name = "rock"
+law = "linear"
+density = 2650
+kn = 1e5
+restitution = 0.5
+friction = 0.5
+[dem]
+thickness = 0.01
+[[grains]]
+name = "g"
+material = "rock"
+packing = "single"
+position = [0.3, 0, 0.3]
+diameter = 0.02
+[[fluid]]
+name = "water"
+shape = "box"
+min = [0, 0]
+max = [0.2, 0.2]
+[[structure]]
+name = "bed"
+type = "flume"
+start = -0.05
+length = 1.1
+wall_height = 0.3
+[[structure]]
+name = "dam"
+type = "check_dam"
+position = 0.8
+thickness = 0.04
+height = 0.15
+)"));
+    long dam_particles = 0;
+    const auto& s = sim.particles();
+    for (Index i = 0; i < s.size(); ++i) dam_particles += s.kind[i] == 1 && s.group[i] == 1;
+    // 4 x 15 particles at dp = 0.01 (the block is thinner than two kernel skins: all of it).
+    EXPECT_EQ(dam_particles, 60);
+    EXPECT_EQ(sim.grains().walls().walls()[1].name, "dam");
+    // 2D: each box gives 4 faces of 2 triangles (y faces left out); bed and dam: 16.
+    EXPECT_EQ(sim.grains().walls().primitives().size(), 16u);
+}
