@@ -228,7 +228,7 @@ ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
             if (n.size() != 2 || n[0] < 1 || n[1] < 1)
                 t.fail("panels", "expected [n_u, n_v] (>= 1) panels over the face");
             p.panels_u = int(n[0]), p.panels_v = int(n[1]);
-            if (c.dim == 2) p.panels_u = p.axis == 2 ? p.panels_u : 1;
+            if (c.dim == 2) p.panels_v = 1; // one row across the unit width
         } else {
             p.bed = t.real("bed", c.domain.lo.z);
         }

@@ -79,15 +79,17 @@ std::vector<Real> DischargeProbe::sample(Real t, const ProbeContext& ctx) {
         Real rate = 0;
         const Index n = s.size();
         const Vec3 p0 = point_, nn = n_;
-        const Real half = Real(0.5) * dp_;
+        const Real inv_dp = 1 / dp_;
 #pragma omp parallel for reduction(+ : rate)
         for (Index i = 0; i < n; ++i) {
             if (s.kind[i] != 0) continue;
             const Real d = (s.x[i] - p0.x) * nn.x + (s.y[i] - p0.y) * nn.y + (s.z[i] - p0.z) * nn.z;
-            if (d < -half || d >= half) continue;
-            rate += s.mass[i] * (s.vx[i] * nn.x + s.vy[i] * nn.y + s.vz[i] * nn.z);
+            const Real w = 1 - std::abs(d) * inv_dp; // hat of width 2 dp: sums to 1 on a lattice
+            if (w <= 0) continue;
+            rate += w * s.mass[i] * (s.vx[i] * nn.x + s.vy[i] * nn.y + s.vz[i] * nn.z);
         }
-        rate /= dp_;
+        rate *= inv_dp;
+        if (!started_) fluid_rate_last_ = rate;
         fluid_cum_ += Real(0.5) * (rate + fluid_rate_last_) * dt; // trapezoid in time
         fluid_rate_last_ = rate;
         out.insert(out.end(), {rate, rate / rho0_, fluid_cum_});

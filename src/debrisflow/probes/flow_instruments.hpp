@@ -22,8 +22,9 @@ private:
     std::unordered_map<std::uint64_t, Real> last_; // signed distance by grain id / body
 };
 
-// Discharge through a plane by phase: fluid as the slab estimate sum m_i (v_i . n) / dp over
-// particles within dp/2 of the plane (kg/s; volume at rho0), integrated in time for the
+// Discharge through a plane by phase: fluid as the slab estimate sum w_i m_i (v_i . n) / dp
+// with the hat weight w = max(0, 1 - |d_i| / dp) of the distance d_i to the plane (the hats
+// of a lattice's layers sum to one wherever the plane lies) (kg/s; volume at rho0), in time for the
 // cumulative mass; solids (grains and bodies) counted as they cross, with their mean rate over
 // the sampling interval.
 class DischargeProbe : public Probe {
