@@ -1,6 +1,8 @@
 // Instruments of issue #5 against answers known in closed form:
 //  - discharge through a plane of a uniform periodic stream: q = rho U H exactly;
 //  - trapping efficiency and outlet counts with grains in free flight: E = caught / passed;
+//  - a solid feed releases its target discharge Q_s t (within one grain) from a log-normal
+//    size distribution, and its grains settle in a bin;
 //  - pressure map on a tank wall at rest: hydrostatic rho g (H - z) per panel, and panels
 //    summing to the wall force.
 #include "run_case.hpp"
@@ -200,4 +202,56 @@ every = 0.05
                                  100 * (p[std::size_t(k)] - exact) / exact);
         EXPECT_NEAR(p[std::size_t(k)], exact, 0.05 * exact);
     }
+}
+
+TEST(Instruments, SolidFeedReleasesTargetDischarge) {
+    app::Simulation sim(test::case_from_toml("feed", R"(
+dimensions = 3
+[time]
+end = 1.0
+[output]
+vtk = false
+[domain]
+min = [0, 0, 0]
+max = [0.3, 0.3, 0.6]
+[[material]]
+name = "rock"
+law = "hertz_mindlin"
+density = 2650
+youngs_modulus = 5e6
+poisson = 0.3
+restitution = 0.3
+friction = 0.5
+[[feed]]
+name = "hopper"
+material = "rock"
+min = [0.05, 0.05, 0.4]
+max = [0.25, 0.25, 0.5]
+times = [0, 0.5, 1.0]
+discharge = [2e-5, 2e-5, 0]
+size = {distribution = "lognormal", d50 = 0.012, sigma = 0.2, min = 0.008, max = 0.018}
+[[wall]]
+name = "bin"
+shape = "box"
+min = [0, 0, 0]
+max = [0.3, 0.3, 0.02]
+[[probe]]
+name = "pile"
+type = "deposit"
+min = [0, 0, 0]
+max = [0.3, 0.3, 0.2]
+every = 0.01
+)"));
+    sim.run({"", true, 0});
+    const auto& f = sim.probe("hopper").finals();
+    // Hydrograph: 2e-5 m^3/s for 0.5 s, then down to 0 at 1 s: 1.5e-5 m^3 of solid.
+    const double target = 2e-5 * 0.5 + 1e-5 * 0.5;
+    const double largest = 3.14159265358979323846 / 6 * 0.018 * 0.018 * 0.018;
+    std::cout << fmt::format("feed released {:.4e} m^3 ({} grains, owed {:.2e}) of {:.4e}\n",
+                             f[1], f[3], f[4], target);
+    EXPECT_NEAR(f[1], target, largest); // within one grain of the target
+    EXPECT_EQ(long(f[3]), long(sim.grains().grains().size()));
+    EXPECT_NEAR(sim.grains().grains().total_mass(), f[2], 1e-12);
+    // After 1 s the first grains have fallen ~0.4 m into the bin (free fall: 0.3 s).
+    EXPECT_GT(sim.probe("pile").finals()[0], 0.5 * target);
 }

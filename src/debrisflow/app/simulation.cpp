@@ -52,6 +52,16 @@ Simulation::Simulation(io::CaseSpec spec) : spec_(std::move(spec)) {
         inlets_.push_back(std::make_unique<flow::FluidInlet>(in, spec_));
         probes_.push_back(std::make_unique<probes::InletProbe>(*inlets_.back(), in.every));
     }
+    for (const auto& f : spec_.dem.feeds) {
+        feeds_.push_back(std::make_unique<flow::GrainFeed>(f, spec_));
+        probes_.push_back(std::make_unique<probes::FeedProbe>(*feeds_.back(), f.every));
+        // The DEM step must hold for the smallest grain the feed can release.
+        dem::GrainSet prototype;
+        for (Real d : {f.size.min, f.size.max})
+            scenario::add_grain(spec_, prototype, {}, {}, {}, d,
+                                scenario::material_index(spec_, f.material));
+        dem_->include_sizes(prototype);
+    }
     for (const auto& out : spec_.outlets) {
         outlets_.push_back(std::make_unique<flow::Outlet>(out, spec_.sph.rho0));
         probes_.push_back(std::make_unique<probes::OutletProbe>(*outlets_.back(), out.every));
@@ -203,9 +213,10 @@ io::RunReport Simulation::run(const RunOptions& opt) {
         });
     }
     // Open boundaries act between the integration and the neighbour search of each step.
-    if (!inlets_.empty() || !outlets_.empty())
+    if (!inlets_.empty() || !outlets_.empty() || !feeds_.empty())
         integ.add_hook(time::Hook::after_integration, [this](const time::StepInfo& s) {
             for (auto& in : inlets_) in->apply(set_, s.t, s.dt);
+            for (auto& f : feeds_) f->apply(*dem_, s.t, s.dt);
             for (auto& out : outlets_) out->apply(solver_.get(), dem_.get());
         });
     for (auto& p : probes_) {

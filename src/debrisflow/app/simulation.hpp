@@ -1,5 +1,6 @@
 #pragma once
 #include "debrisflow/flow/fluid_inlet.hpp"
+#include "debrisflow/flow/grain_feed.hpp"
 #include "debrisflow/flow/outlet.hpp"
 #include "debrisflow/core/log.hpp"
 #include "debrisflow/dem/dem_solver.hpp"
@@ -66,6 +67,7 @@ private:
     bool settled_ = false;
     std::vector<std::unique_ptr<flow::FluidInlet>> inlets_;
     std::vector<std::unique_ptr<flow::Outlet>> outlets_;
+    std::vector<std::unique_ptr<flow::GrainFeed>> feeds_;
     std::vector<std::unique_ptr<probes::Probe>> probes_;
     Log log_;
     Real t_ = 0;

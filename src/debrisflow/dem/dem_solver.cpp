@@ -471,6 +471,20 @@ void DemSolver::grains_added(Index old_count) {
     rebuild();
 }
 
+void DemSolver::include_sizes(const GrainSet& prototypes) {
+    std::vector<int> wall_materials;
+    for (const auto& w : walls_.walls()) wall_materials.push_back(w.material);
+    for (Real r : prototypes.radius) max_radius_ = std::max(max_radius_, r);
+    skin_ = params_.skin * 2 * max_radius_;
+    const auto lim =
+        critical_dt(prototypes, wall_materials, materials_, table_, params_, domain_, params_.safety);
+    if (lim.dt < auto_dt_.dt) auto_dt_ = lim;
+    const auto stab = critical_dt(prototypes, wall_materials, materials_, table_, params_, domain_,
+                                  stability_fraction);
+    if (stab.dt < stability_dt_.dt) stability_dt_ = stab;
+    if (params_.dt <= 0) dt_ = auto_dt_.dt;
+}
+
 void DemSolver::stop_grains() {
     for (auto* v : {&grains_.vel, &grains_.spin}) std::fill(v->begin(), v->end(), Vec3{});
     refresh_hot();

@@ -51,6 +51,9 @@ public:
     void remove_grains(const std::vector<std::uint8_t>& keep);
     // Call after grains were appended to the GrainSet (a feed): they join the contact search.
     void grains_added(Index old_count);
+    // Lowers the automatic step so that it also holds for the grains in `prototypes` (sizes a
+    // feed will release later).
+    void include_sizes(const GrainSet& prototypes);
     // Grains also collide with the spheres of rigid bodies in `o` (null: none).
     void attach_obstacles(ObstacleSet* o) { obstacles_ = o; }
     // Sets every grain's velocity and spin to zero (end of settling).

@@ -70,6 +70,18 @@ struct GrainsSpec {
     std::string file;
 };
 
+// Solid feed (a hopper outlet or an insertion region): grains of `size` released at random
+// non-overlapping places in the box `min`-`max` at a solid discharge Q_s(t) [m^3/s of solid;
+// 2D: m^2/s], piecewise linear in `times` (one value: constant), with `velocity`.
+struct FeedSpec {
+    std::string name, material;
+    SizeSpec size;
+    Vec3 min, max, velocity;
+    std::vector<Real> times, discharge;
+    unsigned seed = 1;
+    Real every = 0.01;
+};
+
 struct DemSpec {
     dem::DemParams params;
     std::vector<dem::Material> materials;
@@ -79,6 +91,7 @@ struct DemSpec {
     Real settle_ratio = 0.01; // stop when mean unbalanced / mean contact force < this
     Real settle_max_time = 2; // [s] of settling before giving up
     std::vector<GrainsSpec> grains;
+    std::vector<FeedSpec> feeds;
 };
 
 // A rigid body: shape (box, sphere, cylinder, stl, clump of spheres), material (a DEM

@@ -140,6 +140,39 @@ GrainsSpec read_grains(const ConfigTable& t, const CaseSpec& c) {
     return g;
 }
 
+FeedSpec read_feed(const ConfigTable& t, const CaseSpec& c) {
+    FeedSpec f;
+    f.name = t.string("name");
+    f.material = t.string("material");
+    const auto& mats = c.dem.materials;
+    if (std::none_of(mats.begin(), mats.end(), [&](const auto& m) { return m.name == f.material; }))
+        t.fail("material", "no [[material]] named \"" + f.material + "\"");
+    f.size = read_size(t);
+    f.min = t.vec3("min", c.dim);
+    f.max = t.vec3("max", c.dim);
+    for (int k = 0; k < 3; ++k)
+        if (!(c.dim == 2 && k == 1) && !(f.max[k] - f.min[k] > f.size.max))
+            t.fail("max", fmt::format("the region must exceed the largest diameter in {}", "xyz"[k]));
+    if (t.has("times")) {
+        f.times = t.reals("times");
+        f.discharge = t.reals("discharge");
+        if (f.times.size() != f.discharge.size() || f.times.empty())
+            t.fail("discharge", "needs one value per entry of 'times' (a hydrograph)");
+        for (std::size_t k = 1; k < f.times.size(); ++k)
+            if (!(f.times[k] > f.times[k - 1])) t.fail("times", "must increase");
+    } else {
+        f.discharge = {t.real("discharge")};
+        f.times = {0};
+    }
+    for (Real q : f.discharge)
+        if (q < 0) t.fail("discharge", "must be >= 0 [m^3/s of solid] (2D: m^2/s)");
+    f.velocity = t.vec3("velocity", c.dim, {});
+    f.seed = unsigned(t.integer("seed", 1));
+    f.every = t.positive("every", 0.01);
+    t.finish();
+    return f;
+}
+
 } // namespace
 
 void read_dem(const ConfigTable& root, CaseSpec& c) {
@@ -156,7 +189,11 @@ void read_dem(const ConfigTable& root, CaseSpec& c) {
         c.dem.grains.push_back(read_grains(t, c));
         if (c.dem.materials.empty()) t.fail("material", "define a [[material]] first");
     }
-    c.has_dem = !c.dem.grains.empty();
+    for (const auto& t : root.tables("feed")) {
+        if (c.dem.materials.empty()) t.fail("material", "define a [[material]] first");
+        c.dem.feeds.push_back(read_feed(t, c));
+    }
+    c.has_dem = !c.dem.grains.empty() || !c.dem.feeds.empty();
     auto& p = c.dem.params;
     p.dim = c.dim;
     auto t = root.table("dem");
@@ -165,7 +202,7 @@ void read_dem(const ConfigTable& root, CaseSpec& c) {
             root.fail("dem", "a 2D case with grains needs [dem] thickness (disc thickness, m)");
         return;
     }
-    if (!c.has_dem) t->fail("dt", "[dem] given but no [[grains]]");
+    if (!c.has_dem) t->fail("dt", "[dem] given but no [[grains]] or [[feed]]");
     if (t->has("dt")) p.dt = t->positive("dt");
     p.safety = t->positive("safety", 0.02);
     if (p.safety > 0.3) t->fail("safety", "must be <= 0.3 (fraction of the contact time)");

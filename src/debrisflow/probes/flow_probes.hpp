@@ -1,5 +1,6 @@
 #pragma once
 #include "debrisflow/flow/fluid_inlet.hpp"
+#include "debrisflow/flow/grain_feed.hpp"
 #include "debrisflow/flow/outlet.hpp"
 #include "debrisflow/probes/probe.hpp"
 
@@ -43,6 +44,23 @@ public:
 private:
     const flow::Outlet& outlet_;
     Real t_last_ = 0, fluid_last_ = 0, grain_last_ = 0;
+};
+
+// probes/<feed>.csv: the target solid discharge, what has been released and what is owed (a
+// growing debt means the release region is full: the feed is choked).
+class FeedProbe : public Probe {
+public:
+    FeedProbe(const flow::GrainFeed& feed, Real every) : Probe(feed.name(), every), feed_(feed) {}
+    std::vector<std::string> columns() const override {
+        return {"Qs [m3/s]", "volume_in [m3]", "mass_in [kg]", "grains_in [-]", "owed [m3]"};
+    }
+    std::vector<Real> sample(Real t, const ProbeContext&) override {
+        return {feed_.discharge(t), feed_.volume_in(), feed_.mass_in(), Real(feed_.grains_in()),
+                feed_.owed()};
+    }
+
+private:
+    const flow::GrainFeed& feed_;
 };
 
 } // namespace debrisflow::probes

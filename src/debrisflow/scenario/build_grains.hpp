@@ -11,6 +11,11 @@ namespace debrisflow::scenario {
 // case's thickness t (I = 1/2 m r^2), as PFC2D.
 void build_grains(const io::CaseSpec& spec, dem::GrainSet& grains);
 
+// Appends one grain of diameter d and material index mat (masses as above).
+void add_grain(const io::CaseSpec& c, dem::GrainSet& g, Vec3 x, Vec3 v, Vec3 w, Real d, int mat);
+// Index of the [[material]] called `name`.
+int material_index(const io::CaseSpec& c, const std::string& name);
+
 // Geometric walls (planes and triangles) of every [[wall]] block.
 void build_dem_walls(const io::CaseSpec& spec, dem::WallSet& walls);
 

@@ -1,0 +1,75 @@
+#include "debrisflow/flow/grain_feed.hpp"
+#include "debrisflow/dem/dem_solver.hpp"
+#include "debrisflow/scenario/build_grains.hpp"
+#include <cmath>
+
+namespace debrisflow::flow {
+
+namespace {
+constexpr Real pi = 3.14159265358979323846;
+}
+
+GrainFeed::GrainFeed(const io::FeedSpec& spec, const io::CaseSpec& c)
+    : spec_(spec), case_(c), q_{spec.times, spec.discharge}, sizes_(spec.size, c.dim, spec.seed),
+      material_(scenario::material_index(c, spec.material)) {
+    next_d_ = sizes_();
+}
+
+Real GrainFeed::volume_of(Real d) const {
+    const Real r = d / 2;
+    return case_.dim == 2 ? pi * r * r * case_.dem.thickness : Real(4) / 3 * pi * r * r * r;
+}
+
+void GrainFeed::apply(dem::DemSolver& dem, Real t, Real dt) {
+    owed_ += q_.at(t) * dt;
+    if (owed_ < volume_of(next_d_)) return;
+    auto& g = dem.grains();
+    const Index before = g.size();
+    // Grains near the region (possible overlaps), gathered once per batch.
+    const Real reach = spec_.size.max;
+    std::vector<std::pair<Vec3, Real>> near;
+    for (Index i = 0; i < g.size(); ++i) {
+        const Vec3 p = g.pos[std::size_t(i)];
+        bool in = true;
+        for (int k = 0; k < 3; ++k)
+            if (!(case_.dim == 2 && k == 1))
+                in = in && p[k] > spec_.min[k] - reach - g.radius[std::size_t(i)] &&
+                     p[k] < spec_.max[k] + reach + g.radius[std::size_t(i)];
+        if (in) near.push_back({p, g.radius[std::size_t(i)]});
+    }
+    std::uniform_real_distribution<Real> u(0, 1);
+    auto& rng = sizes_.rng();
+    constexpr int tries_per_grain = 200;
+    while (owed_ >= volume_of(next_d_)) {
+        const Real r = next_d_ / 2;
+        bool placed = false;
+        for (int k = 0; k < tries_per_grain && !placed; ++k) {
+            Vec3 p;
+            for (int a = 0; a < 3; ++a)
+                p[a] = case_.dim == 2 && a == 1
+                           ? 0
+                           : spec_.min[a] + r + u(rng) * (spec_.max[a] - spec_.min[a] - 2 * r);
+            bool free = true;
+            for (const auto& [q, rq] : near) {
+                const Vec3 s = p - q;
+                if (dot(s, s) < (r + rq) * (r + rq)) {
+                    free = false;
+                    break;
+                }
+            }
+            if (!free) continue;
+            scenario::add_grain(case_, g, p, spec_.velocity, {}, next_d_, material_);
+            near.push_back({p, r});
+            placed = true;
+        }
+        if (!placed) break; // region full: the debt waits for the next step
+        owed_ -= volume_of(next_d_);
+        volume_in_ += volume_of(next_d_);
+        mass_in_ += g.mass.back();
+        ++count_;
+        next_d_ = sizes_();
+    }
+    if (g.size() > before) dem.grains_added(before);
+}
+
+} // namespace debrisflow::flow
