@@ -290,11 +290,33 @@ io::RunReport Simulation::run(const RunOptions& opt) {
                           "{:.2f} s, output {:.2f} s)",
                           r.steps, r.t, r.wall_seconds, pss, r.timings.neighbors, r.timings.forces,
                           r.timings.integration, r.timings.output));
+    std::vector<probes::BodyInfo> body_info;
+    if (rigid_)
+        for (std::size_t b = 0; b < rigid_->bodies().size(); ++b)
+            body_info.push_back({rigid_->models()[b].name, rigid_->bodies()[b].mass,
+                                 rigid_->models()[b].volume,
+                                 scenario::material_index(spec_, spec_.rigid.bodies[b].material)});
+    const auto design = probes::design_checks(spec_, probes_, body_info);
+    for (const auto& d : design) {
+        if (d.hydro)
+            log_.line(fmt::format("design '{}': peak normal load {:.4g} at t = {:.4g} s; "
+                                  "F = alpha rho v^2 h w with rho {:.4g}, v {:.4g} m/s, h {:.4g} "
+                                  "m, w {:.4g} m gives alpha = {:.3g}",
+                                  d.probe, d.f_peak, d.f_peak_time, d.rho, d.v, d.h, d.w,
+                                  d.alpha));
+        if (d.hertz)
+            log_.line(fmt::format("design '{}': Hertz boulder load {:.4g} N (m {:.4g} kg, r "
+                                  "{:.4g} m, v {:.4g} m/s, E* {:.4g} Pa), K_c = {} -> {:.4g} N; "
+                                  "measured bodies' peak {:.4g} N",
+                                  d.probe, d.f_hertz, d.mass, d.radius, d.v_impact, d.e_star,
+                                  d.k_c, d.k_c * d.f_hertz, d.f_bodies_peak));
+        if (!d.note.empty()) log_.line("design '" + d.probe + "': " + d.note);
+    }
     if (files) {
         if (dem_)
             scenario::write_grain_state(opt.out_dir + "/grains_final.csv", grains_,
                                         spec_.dem.materials);
-        io::write_summary(opt.out_dir + "/summary.json", spec_, report, probes_);
+        io::write_summary(opt.out_dir + "/summary.json", spec_, report, probes_, design);
         log_.line("output: " + opt.out_dir +
                   " (vtk/*.pvd for ParaView, probes/*.csv, summary.json, log.txt)");
     }

@@ -218,6 +218,28 @@ ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
         if (p.type == "wall_force") {
             p.normal = t.vec3("normal", c.dim, {});
             if (norm(p.normal) > 0) p.normal = (1 / norm(p.normal)) * p.normal;
+            p.approach = t.string("approach", "");
+            p.boulder = t.string("boulder", "");
+            if ((!p.approach.empty() || !p.boulder.empty()) && norm(p.normal) == 0)
+                t.fail("normal", "design companions need the wall's normal (the load direction)");
+            if (!p.approach.empty()) {
+                p.width = c.dim == 2 ? t.positive("width", 1) : t.positive("width");
+                p.rho = t.real("rho", 0);
+                if (p.rho < 0) t.fail("rho", "must be >= 0 (0: the approach probe's density)");
+                if (std::none_of(c.probes.begin(), c.probes.end(), [&](const auto& q) {
+                        return q.name == p.approach &&
+                               (q.type == "flow_section" || q.type == "section");
+                    }))
+                    t.fail("approach", "no flow_section or section probe named \"" + p.approach +
+                                           "\" above this one");
+            }
+            if (!p.boulder.empty()) {
+                p.k_c = t.positive("k_c", 0.1);
+                if (std::none_of(c.probes.begin(), c.probes.end(), [&](const auto& q) {
+                        return q.name == p.boulder && q.type == "body";
+                    }))
+                    t.fail("boulder", "no body probe named \"" + p.boulder + "\" above this one");
+            }
         } else if (p.type == "pressure_map") {
             const std::string a = t.choice("axis", {"x", "y", "z"}, "x");
             p.axis = a == "x" ? 0 : (a == "y" ? 1 : 2);

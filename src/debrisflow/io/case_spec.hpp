@@ -151,6 +151,11 @@ struct ProbeSpec {
     Vec3 point_b;  // trapping: the downstream plane's point (position: the upstream one)
     Real t0 = 0, t1 = 1e30;    // trapping: counting window [s]
     int panels_u = 1, panels_v = 1; // pressure_map: panels along the face's two axes
+    // wall_force design companions: approach-flow probe (flow_section or section), impact
+    // width [m] and bulk density [kg/m^3] (0: from the probe) for F = alpha rho v^2 h w; a body
+    // probe for the Hertz boulder load with the load-reduction factor K_c (Kwan 2012).
+    std::string approach, boulder;
+    Real width = 0, rho = 0, k_c = 0.1;
 };
 
 // Fluid entering through the downstream face of a buffer box (`min`-`max`) along `axis`

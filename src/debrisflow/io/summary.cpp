@@ -24,7 +24,8 @@ std::string quoted(const std::string& s) {
 } // namespace
 
 void write_summary(const std::string& path, const CaseSpec& spec, const RunReport& r,
-                   const std::vector<std::unique_ptr<probes::Probe>>& probes) {
+                   const std::vector<std::unique_ptr<probes::Probe>>& probes,
+                   const std::vector<probes::DesignCheck>& design) {
     std::ofstream o(path);
     const auto& res = r.result;
     const long n = r.fluid + r.boundary + r.grains;
@@ -60,6 +61,28 @@ void write_summary(const std::string& path, const CaseSpec& spec, const RunRepor
     o << fmt::format("  \"timings\": {{\"neighbors\": {}, \"forces\": {}, \"integration\": {}, "
                      "\"output\": {}}},\n",
                      num(t.neighbors), num(t.forces), num(t.integration), num(t.output));
+    if (!design.empty()) {
+        o << "  \"design\": [";
+        for (std::size_t k = 0; k < design.size(); ++k) {
+            const auto& d = design[k];
+            o << (k ? ",\n" : "\n") << "    {\"probe\": " << quoted(d.probe)
+              << ", \"F_peak\": " << num(d.f_peak) << ", \"F_peak_time\": " << num(d.f_peak_time);
+            if (d.hydro)
+                o << fmt::format(", \"hydrodynamic\": {{\"rho\": {}, \"v\": {}, \"h\": {}, "
+                                 "\"w\": {}, \"alpha\": {}}}",
+                                 num(d.rho), num(d.v), num(d.h), num(d.w), num(d.alpha));
+            if (d.hertz)
+                o << fmt::format(", \"hertz\": {{\"mass\": {}, \"radius\": {}, \"v\": {}, "
+                                 "\"E_star\": {}, \"F_hertz\": {}, \"K_c\": {}, "
+                                 "\"F_design\": {}, \"F_bodies_peak\": {}}}",
+                                 num(d.mass), num(d.radius), num(d.v_impact), num(d.e_star),
+                                 num(d.f_hertz), num(d.k_c), num(d.k_c * d.f_hertz),
+                                 num(d.f_bodies_peak));
+            if (!d.note.empty()) o << ", \"note\": " << quoted(d.note);
+            o << "}";
+        }
+        o << "\n  ],\n";
+    }
     o << "  \"probes\": {";
     for (std::size_t k = 0; k < probes.size(); ++k) {
         const auto& p = *probes[k];

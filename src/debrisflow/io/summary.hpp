@@ -1,4 +1,5 @@
 #pragma once
+#include "debrisflow/probes/design_formulas.hpp"
 #include "debrisflow/io/case_spec.hpp"
 #include "debrisflow/probes/probe.hpp"
 #include "debrisflow/time/integrator.hpp"
@@ -23,7 +24,9 @@ struct RunReport {
 };
 
 // summary.json: counts, steps, times, throughput, timing breakdown and probe peaks/finals.
+// `design`: design-formula companions of measured peak wall loads (may be empty).
 void write_summary(const std::string& path, const CaseSpec& spec, const RunReport& report,
-                   const std::vector<std::unique_ptr<probes::Probe>>& probes);
+                   const std::vector<std::unique_ptr<probes::Probe>>& probes,
+                   const std::vector<probes::DesignCheck>& design = {});
 
 } // namespace debrisflow::io
