@@ -79,7 +79,9 @@ std::vector<DesignCheck> design_checks(const io::CaseSpec& c,
             auto compliance = [](const dem::Material& m) {
                 return m.rigid ? Real(0) : (1 - m.poisson * m.poisson) / m.youngs_modulus;
             };
-            if (!(mb.youngs_modulus > 0)) {
+            if (c.dim == 2) {
+                d.note += "Hertz boulder load: 3D only (a 2D disc makes a line contact); ";
+            } else if (!(mb.youngs_modulus > 0)) {
                 d.note += "the boulder's material has no Young's modulus; ";
             } else {
                 d.e_star = 1 / (compliance(mb) + compliance(mw));
