@@ -238,7 +238,11 @@ io::RunReport Simulation::run(const RunOptions& opt) {
         integ.add_observer(frames, [this, &vtk_bodies](const time::StepInfo& s) {
             write_bodies(*vtk_bodies, s.t);
         });
-    const double particles = double(set_.size() + grains_.size());
+    // Particle-steps counted step by step: inlets, feeds and outlets change the count.
+    double particle_steps = 0;
+    integ.add_observer(time::Schedule::every_steps(1), [&](const time::StepInfo& s) {
+        if (s.step > 0) particle_steps += double(set_.size() + grains_.size());
+    });
     const auto wall0 = std::chrono::steady_clock::now();
     auto last_report = wall0;
     integ.add_observer(time::Schedule::every_steps(1), [&](const time::StepInfo& s) {
@@ -248,7 +252,7 @@ io::RunReport Simulation::run(const RunOptions& opt) {
             return;
         last_report = now;
         const double wall = std::chrono::duration<double>(now - wall0).count();
-        const double pss = wall > 0 ? particles * double(s.step) / wall : 0;
+        const double pss = wall > 0 ? particle_steps / wall : 0;
         const double eta = s.t > 0 ? wall * (spec_.t_end - s.t) / s.t : 0;
         log_.line(fmt::format("t = {:.5f} s  step {}  dt = {:.3e} s ({})  {:.3g} "
                               "particle-steps/s  wall {:.1f} s  ETA {:.0f} s{}",
@@ -257,6 +261,9 @@ io::RunReport Simulation::run(const RunOptions& opt) {
     });
 
     auto finish_stats = [&]() {
+        report.particle_steps = particle_steps;
+        report.fluid_end = set_.count(particles::Kind::fluid);
+        report.grains_end = grains_.size();
         if (solver_) {
             report.pair_list_builds = solver_->list_builds();
             report.pairs = solver_->pair_list().pairs();
@@ -284,7 +291,8 @@ io::RunReport Simulation::run(const RunOptions& opt) {
         throw;
     }
     const auto& r = report.result;
-    const double pss = r.wall_seconds > 0 ? particles * r.steps / r.wall_seconds : 0;
+    report.particle_steps = particle_steps;
+    const double pss = r.wall_seconds > 0 ? particle_steps / r.wall_seconds : 0;
     log_.line(fmt::format("finished: {} steps to t = {:.6g} s in {:.2f} s wall, {:.3g} "
                           "particle-steps/s (neighbours {:.2f} s, forces {:.2f} s, integration "
                           "{:.2f} s, output {:.2f} s)",

@@ -29,7 +29,8 @@ void write_summary(const std::string& path, const CaseSpec& spec, const RunRepor
     std::ofstream o(path);
     const auto& res = r.result;
     const long n = r.fluid + r.boundary + r.grains;
-    const double pss = res.wall_seconds > 0 ? double(n) * double(res.steps) / res.wall_seconds : 0;
+    const double ps = r.particle_steps > 0 ? r.particle_steps : double(n) * double(res.steps);
+    const double pss = res.wall_seconds > 0 ? ps / res.wall_seconds : 0;
     o << "{\n";
     o << "  \"case\": " << quoted(spec.name) << ",\n";
     o << "  \"status\": " << quoted(r.status) << ",\n";
@@ -39,6 +40,8 @@ void write_summary(const std::string& path, const CaseSpec& spec, const RunRepor
     o << fmt::format("  \"particles\": {{\"fluid\": {}, \"boundary\": {}, \"grains\": {}, "
                      "\"total\": {}}},\n",
                      r.fluid, r.boundary, r.grains, n);
+    o << fmt::format("  \"particles_end\": {{\"fluid\": {}, \"grains\": {}}},\n", r.fluid_end,
+                     r.grains_end);
     o << "  \"steps\": " << res.steps << ",\n";
     o << "  \"simulated_time\": " << num(res.t) << ",\n";
     o << "  \"end_time\": " << num(spec.t_end) << ",\n";

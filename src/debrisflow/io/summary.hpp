@@ -20,6 +20,8 @@ struct RunReport {
     time::RunResult result;
     time::DtLimit initial_dt{0, ""};
     long pair_list_builds = 0;
+    long fluid_end = 0, grains_end = 0; // at the end (inlets, feeds and outlets change them)
+    double particle_steps = 0; // sum over steps of the particles present (fluid, walls, grains)
     std::size_t pairs = 0; // half pair list entries at the end (pairs within support + skin)
 };
 
