@@ -105,6 +105,20 @@ void VtkSeries::write(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
     write_frame(n, make_block("points", "Float32", 3, pos), point_data, "radius", t);
 }
 
+void VtkSeries::write(const std::vector<Vec3>& x,
+                      const std::vector<std::pair<std::string, std::vector<float>>>& scalars,
+                      Real t) {
+    const std::size_t n = x.size();
+    std::vector<float> pos(3 * n);
+    for (std::size_t i = 0; i < n; ++i)
+        for (int d = 0; d < 3; ++d) pos[3 * i + std::size_t(d)] = float(x[i][d]);
+    std::vector<Block> point_data;
+    for (const auto& [name, values] : scalars)
+        point_data.push_back(make_block(name, "Float32", 1, values));
+    write_frame(n, make_block("points", "Float32", 3, pos), point_data,
+                scalars.empty() ? "" : scalars.front().first, t);
+}
+
 void VtkSeries::write_frame(std::size_t n, Block points, const std::vector<Block>& point_data,
                             const std::string& scalars, Real t) {
     std::vector<std::int32_t> conn(n), offs(n);

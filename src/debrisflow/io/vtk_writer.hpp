@@ -18,6 +18,9 @@ public:
     // Rigid-body surface points (contact samples, vertices): velocity, radius, body index.
     void write(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
                const std::vector<float>& radius, const std::vector<std::int32_t>& body, Real t);
+    // Points with named scalar fields (e.g. panel centres of a pressure map).
+    void write(const std::vector<Vec3>& x,
+               const std::vector<std::pair<std::string, std::vector<float>>>& scalars, Real t);
     int frames() const { return int(entries_.size()); }
 
     struct Block {

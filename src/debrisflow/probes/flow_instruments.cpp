@@ -220,3 +220,34 @@ std::vector<Real> PressureMapProbe::sample(Real, const ProbeContext& ctx) {
 }
 
 } // namespace debrisflow::probes
+
+namespace debrisflow::probes {
+
+void PressureMapProbe::open_extra(const std::string& dir) {
+    // dir is OUT/probes: the frames go beside the particle frames in OUT/vtk.
+    vtk_ = std::make_unique<io::VtkSeries>(dir + "/../vtk", name());
+}
+
+void PressureMapProbe::after_sample(Real t, const std::vector<Real>& p) {
+    if (!vtk_) return;
+    const Real du = (hi_[u_] - lo_[u_]) / nu_, dv = (hi_[v_] - lo_[v_]) / nv_;
+    // The face: the wall's bounding-box side that the normal points out of.
+    const Real face = normal_[axis_] < 0 ? lo_[axis_] : hi_[axis_];
+    std::vector<Vec3> x;
+    std::vector<float> pressure, force, area;
+    for (int i = 0; i < nu_; ++i)
+        for (int j = 0; j < nv_; ++j) {
+            Vec3 c;
+            c[axis_] = face;
+            c[u_] = lo_[u_] + (i + Real(0.5)) * du;
+            c[v_] = dim_ == 2 ? 0 : lo_[v_] + (j + Real(0.5)) * dv;
+            x.push_back(c);
+            const Real pij = p[std::size_t(i * nv_ + j)];
+            pressure.push_back(float(pij));
+            force.push_back(float(pij * du * dv));
+            area.push_back(float(du * dv));
+        }
+    vtk_->write(x, {{"pressure", pressure}, {"force", force}, {"area", area}}, t);
+}
+
+} // namespace debrisflow::probes

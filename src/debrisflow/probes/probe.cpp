@@ -19,10 +19,12 @@ void Probe::open(const std::string& dir) {
     csv_ << "time [s]";
     for (const auto& c : columns()) csv_ << "," << c;
     csv_ << "\n";
+    open_extra(dir);
 }
 
 void Probe::record(Real t, const ProbeContext& ctx) {
     const auto v = sample(t, ctx);
+    after_sample(t, v);
     if (peak_.empty()) {
         peak_ = v;
         peak_t_.assign(v.size(), t);

@@ -34,7 +34,11 @@ public:
     virtual std::vector<Real> sample(Real t, const ProbeContext& ctx) = 0;
 
     Real every() const { return every_; }
+    // Opens probes/<name>.csv in `dir`; probes with field output also open their VTK series.
     void open(const std::string& dir);
+    virtual void open_extra(const std::string& /*dir*/) {}
+    // Called after each sample with its values (field output).
+    virtual void after_sample(Real /*t*/, const std::vector<Real>& /*values*/) {}
     void record(Real t, const ProbeContext& ctx);
     const std::vector<Real>& peaks() const { return peak_; }
     const std::vector<Real>& finals() const { return last_; }

@@ -276,10 +276,20 @@ void BodySolver::check_health(Real t) const {
         bool finite = true;
         for (Real v : vals) finite = finite && std::isfinite(v);
         bool inside = true;
+        int wrapped = -1;
         for (int k = 0; k < 3 && finite; ++k)
-            if (!(params_.dim == 2 && k == 1) && !d.periodic[k] &&
-                (s.pos[k] < d.lo[k] || s.pos[k] > d.hi[k]))
-                inside = false;
+            if (!(params_.dim == 2 && k == 1) && (s.pos[k] < d.lo[k] || s.pos[k] > d.hi[k])) {
+                if (d.periodic[k])
+                    wrapped = k;
+                else
+                    inside = false;
+            }
+        if (finite && inside && wrapped >= 0)
+            throw InstabilityError(fmt::format(
+                "at t = {:.6g} s: body '{}' crossed the periodic boundary in {} (at {:.4g} m); "
+                "rigid bodies do not wrap through periodic directions yet: keep them inside, "
+                "or remove them before with a sink",
+                t, models_[b].name, "xyz"[wrapped], s.pos[wrapped]));
         if (finite && inside) continue;
         throw InstabilityError(fmt::format(
             "{} at t = {:.6g} s: body '{}' at ({:.4g}, {:.4g}, {:.4g}) m, velocity ({:.4g}, "
