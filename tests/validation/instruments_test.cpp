@@ -255,3 +255,44 @@ every = 0.01
     // After 1 s the first grains have fallen ~0.4 m into the bin (free fall: 0.3 s).
     EXPECT_GT(sim.probe("pile").finals()[0], 0.5 * target);
 }
+
+TEST(Instruments, SolidCrossingCountsLapsInPeriodicFlume) {
+    // One grain circulates at 1 m/s in a 1 m periodic box (no gravity): in 2.5 s it crosses the
+    // plane x = 0.5 three times (t = 0.3, 1.3, 2.3 s) and wraps twice, which are not crossings.
+    app::Simulation sim(test::case_from_toml("laps", R"(
+dimensions = 3
+[time]
+end = 2.5
+[output]
+vtk = false
+[physics]
+gravity = [0, 0, 0]
+[domain]
+min = [0, 0, 0]
+max = [1, 1, 1]
+periodic = ["x"]
+[[material]]
+name = "rock"
+law = "linear"
+density = 2500
+kn = 1e4
+restitution = 0.5
+friction = 0.3
+[[grains]]
+name = "g"
+material = "rock"
+packing = "single"
+position = [0.2, 0.5, 0.5]
+diameter = 0.02
+velocity = [1, 0, 0]
+[[probe]]
+name = "flux"
+type = "mass_flux"
+point = [0.5, 0, 0]
+normal = [1, 0, 0]
+every = 0.01
+)"));
+    sim.run({"", true, 0});
+    const double m = 2500 * 3.14159265358979323846 / 6 * 0.02 * 0.02 * 0.02;
+    EXPECT_NEAR(sim.probe("flux").finals()[1], 3 * m, 1e-12);
+}

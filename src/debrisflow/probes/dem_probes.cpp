@@ -79,23 +79,23 @@ std::vector<Real> RunupProbe::sample(Real, const ProbeContext& ctx) {
     return {top};
 }
 
+MassFluxProbe::MassFluxProbe(const io::ProbeSpec& s, const io::CaseSpec& c)
+    : Probe(s.name, s.every), crossing_(s.position, s.normal, [&] {
+          int a = 0;
+          for (int k = 1; k < 3; ++k)
+              if (std::abs(s.normal[k]) > std::abs(s.normal[a])) a = k;
+          return Real(0.5) * (c.domain.hi[a] - c.domain.lo[a]);
+      }()) {}
+
 std::vector<Real> MassFluxProbe::sample(Real t, const ProbeContext& ctx) {
-    const auto& g = ctx.dem->grains();
-    for (Index i = 0; i < g.size(); ++i) {
-        const std::size_t k = std::size_t(i);
-        const std::uint32_t id = g.id[k];
-        if (side_.size() <= id) side_.resize(std::size_t(id) + 1, 0);
-        const Real s = dot(Vec3{g.pos[k].x, g.pos[k].y, g.pos[k].z} - point_, normal_);
-        const std::int8_t now = s >= 0 ? 1 : -1;
-        if (side_[id] != 0 && side_[id] != now) cumulative_ += now * g.mass[k];
-        side_[id] = now;
-    }
+    crossing_.update(ctx);
+    const Real cumulative = crossing_.mass();
     const Real dt = t - last_t_;
-    const Real flux = started_ && dt > 0 ? (cumulative_ - last_cumulative_) / dt : 0;
+    const Real flux = started_ && dt > 0 ? (cumulative - last_cumulative_) / dt : 0;
     started_ = true;
     last_t_ = t;
-    last_cumulative_ = cumulative_;
-    return {flux, cumulative_};
+    last_cumulative_ = cumulative;
+    return {flux, cumulative};
 }
 
 } // namespace debrisflow::probes

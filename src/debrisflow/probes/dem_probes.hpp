@@ -1,4 +1,5 @@
 #pragma once
+#include "debrisflow/probes/flow_instruments.hpp"
 #include "debrisflow/probes/probe.hpp"
 
 namespace debrisflow::probes {
@@ -52,20 +53,18 @@ private:
     Real bed_;
 };
 
-// Mass of grains crossing a plane (point, normal), counted grain by grain from the side each
-// was on at the previous sample: cumulative net mass in the +normal direction and its rate
-// over the sampling interval.
+// Mass of grains (and rigid bodies) crossing a plane (point, normal), counted one by one from
+// the side each was on at the previous sample (periodic wraps are not crossings): cumulative
+// net mass in the +normal direction and its rate over the sampling interval.
 class MassFluxProbe : public Probe {
 public:
-    explicit MassFluxProbe(const io::ProbeSpec& s)
-        : Probe(s.name, s.every), point_(s.position), normal_(s.normal) {}
+    MassFluxProbe(const io::ProbeSpec& s, const io::CaseSpec& c);
     std::vector<std::string> columns() const override { return {"flux [kg/s]", "cumulative [kg]"}; }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
 
 private:
-    Vec3 point_, normal_;
-    std::vector<std::int8_t> side_; // by grain id: -1, +1, 0 (not seen yet)
-    Real cumulative_ = 0, last_cumulative_ = 0, last_t_ = 0;
+    SolidCrossing crossing_;
+    Real last_cumulative_ = 0, last_t_ = 0;
     bool started_ = false;
 };
 

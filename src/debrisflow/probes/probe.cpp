@@ -63,7 +63,7 @@ std::unique_ptr<Probe> make_probe(const io::ProbeSpec& s, const io::CaseSpec& c)
     if (s.type == "front") return std::make_unique<FrontProbe>(s);
     if (s.type == "section") return std::make_unique<SectionProbe>(s, c);
     if (s.type == "kinetic_energy") return std::make_unique<KineticEnergyProbe>(s);
-    if (s.type == "mass_flux") return std::make_unique<MassFluxProbe>(s);
+    if (s.type == "mass_flux") return std::make_unique<MassFluxProbe>(s, c);
     if (s.type == "body") return std::make_unique<BodyProbe>(s, c);
     if (s.type == "discharge") return std::make_unique<DischargeProbe>(s, c);
     if (s.type == "trapping") return std::make_unique<TrappingProbe>(s, c);
