@@ -88,3 +88,53 @@ TEST(CaseReader, C0FromCoefficient) {
     const auto c = test::case_from_toml("c0coef", s);
     EXPECT_NEAR(c.sph.c0, 10 * std::sqrt(9.81 * 0.3), 1e-12);
 }
+
+TEST(CaseReader, SlurryOpenBoundaryAndStructureErrorsNameTheKey) {
+    // A Bingham fluid has n = 1; shear thinning needs mu_max (unbounded at rest).
+    std::string e =
+        error_of(minimal, {"sph.viscosity=\"bingham\"", "sph.consistency=1", "sph.yield_stress=10",
+                           "sph.regularization=100", "sph.flow_index=0.5"});
+    EXPECT_NE(e.find("key 'sph.flow_index'"), std::string::npos) << e;
+    e = error_of(minimal, {"sph.viscosity=\"herschel_bulkley\"", "sph.consistency=1",
+                           "sph.yield_stress=10", "sph.regularization=100", "sph.flow_index=0.5"});
+    EXPECT_NE(e.find("missing required key 'sph.mu_max'"), std::string::npos) << e;
+    const auto c = test::case_from_toml("bingham", minimal,
+                                        {"sph.viscosity=\"bingham\"", "sph.consistency=2",
+                                         "sph.yield_stress=10", "sph.regularization=100"});
+    EXPECT_DOUBLE_EQ(c.sph.rheology.mu_max, 2 + 10 * 100); // mu_p + tau_y m
+    // An inlet buffer shorter than the kernel support; a hydrograph with a missing value.
+    e = error_of(std::string(minimal) + R"(
+[[inlet]]
+name = "in"
+min = [0.5, 0]
+max = [0.52, 0.1]
+discharge = 0.01
+)");
+    EXPECT_NE(e.find("key 'inlet.0.max'"), std::string::npos) << e;
+    EXPECT_NE(e.find("kernel support"), std::string::npos) << e;
+    e = error_of(std::string(minimal) + R"(
+[[inlet]]
+name = "in"
+min = [0.5, 0]
+max = [0.6, 0.1]
+times = [0, 1]
+discharge = [0.01]
+)");
+    EXPECT_NE(e.find("key 'inlet.0.discharge'"), std::string::npos) << e;
+    // A slit dam in 2D; an unknown structure type.
+    e = error_of(std::string(minimal) + R"(
+[[structure]]
+name = "dam"
+type = "slit_dam"
+position = 0.5
+thickness = 0.05
+height = 0.1
+width = 0.3
+slits = 1
+slit_width = 0.05
+)");
+    EXPECT_NE(e.find("key 'structure.0.type'"), std::string::npos) << e;
+    EXPECT_NE(e.find("3D"), std::string::npos) << e;
+    e = error_of(std::string(minimal) + "[[structure]]\nname = \"x\"\ntype = \"weir\"\n");
+    EXPECT_NE(e.find("unknown choice \"weir\""), std::string::npos) << e;
+}

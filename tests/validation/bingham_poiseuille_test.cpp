@@ -127,9 +127,12 @@ TEST(BinghamPoiseuille, PlugWidthAndVelocityProfile) {
     const double l2 = std::sqrt(num / den), u_plug_exact = bingham(a);
     const auto [width, slope] = plug_width(prof);
     std::cout << fmt::format("Bingham Poiseuille: L2 {:.4f}, plug speed {:.5f} vs {:.5f} m/s, "
-                             "plug width {:.5f} vs {:.5f} m, change 0.25->0.35 s {:.2e} m/s, shear-rate slope {:.1f} vs {:.1f} 1/(m s)\n",
-                             l2, u_plug, u_plug_exact, width, 2 * z0, change, slope, rho * F / mu_p);
-    // Steady state reached: the profile changes by < 0.5 % of the plug speed between 0.25 and 0.35 s.
+                             "plug width {:.5f} vs {:.5f} m, change 0.25->0.35 s {:.2e} m/s, "
+                             "shear-rate slope {:.1f} vs {:.1f} 1/(m s)\n",
+                             l2, u_plug, u_plug_exact, width, 2 * z0, change, slope,
+                             rho * F / mu_p);
+    // Steady state reached: the profile changes by < 0.5 % of the plug speed between 0.25 and 0.35
+    // s.
     EXPECT_LT(change, 0.005 * u_plug_exact);
     // Source: analytic Bingham channel flow above; tolerance 3 % (issue #5).
     EXPECT_LT(l2, 0.03);

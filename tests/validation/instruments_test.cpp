@@ -45,8 +45,8 @@ every = 0.01
 )"));
     sim.run({"", true, 0});
     const auto& f = sim.probe("q").finals();
-    std::cout << fmt::format("discharge {:.6f} kg/s/m, {:.6e} m2/s, cumulative {:.6f} kg/m\n",
-                             f[0], f[1], f[2]);
+    std::cout << fmt::format("discharge {:.6f} kg/s/m, {:.6e} m2/s, cumulative {:.6f} kg/m\n", f[0],
+                             f[1], f[2]);
     // rho U H = 1000 x 0.5 x 0.2 = 100 kg/s per metre; over 0.2 s, 20 kg/m.
     EXPECT_NEAR(f[0], 100.0, 1e-6);
     EXPECT_NEAR(f[1], 0.1, 1e-9);
@@ -122,7 +122,7 @@ every = 0.01
     EXPECT_NEAR(e[0], 10 * m, 1e-12);
     EXPECT_NEAR(e[1], 7 * m, 1e-12);
     EXPECT_NEAR(e[2], 0.3, 1e-12);
-    EXPECT_NEAR(out[2], 3 * m, 1e-12);       // grain mass removed by the outlet
+    EXPECT_NEAR(out[2], 3 * m, 1e-12);        // grain mass removed by the outlet
     EXPECT_NEAR(out[3], 3 * m / 2500, 1e-15); // and its solid volume
     EXPECT_NEAR(q[2], 7 * m, 1e-12);          // cumulative solid discharge downstream
     EXPECT_NEAR(pile[1], 7 * m, 1e-12);       // the seven survivors end in x in [2, 3]
@@ -179,15 +179,16 @@ type = "wall_force"
 wall = "right"
 every = 0.05
 )",
-                                                                   dp, H)));
+                                                                     dp, H)));
     sim.run({"", true, 0});
     const auto& p = sim.probe("map").finals();
     const double panel = 0.45 / 9;
     double sum = 0;
     for (int k = 0; k < 9; ++k) sum += p[std::size_t(k)] * panel;
     const double fx = sim.probe("F").finals()[0];
-    std::cout << fmt::format("panel sum {:.3f} N/m vs wall Fx {:.3f} N/m (rho g H^2 / 2 = {:.3f})\n",
-                             sum, fx, 1000 * 9.81 * H * H / 2);
+    std::cout << fmt::format(
+        "panel sum {:.3f} N/m vs wall Fx {:.3f} N/m (rho g H^2 / 2 = {:.3f})\n", sum, fx,
+        1000 * 9.81 * H * H / 2);
     // The panels partition the wall's particles: their loads add up to the wall force.
     EXPECT_NEAR(sum, fx, 1e-6 * std::abs(fx));
     // Panels fully under water and clear of the floor corner (z from 0.05 to 0.25 m):
@@ -247,8 +248,8 @@ every = 0.01
     // Hydrograph: 2e-5 m^3/s for 0.5 s, then down to 0 at 1 s: 1.5e-5 m^3 of solid.
     const double target = 2e-5 * 0.5 + 1e-5 * 0.5;
     const double largest = 3.14159265358979323846 / 6 * 0.018 * 0.018 * 0.018;
-    std::cout << fmt::format("feed released {:.4e} m^3 ({} grains, owed {:.2e}) of {:.4e}\n",
-                             f[1], f[3], f[4], target);
+    std::cout << fmt::format("feed released {:.4e} m^3 ({} grains, owed {:.2e}) of {:.4e}\n", f[1],
+                             f[3], f[4], target);
     EXPECT_NEAR(f[1], target, largest); // within one grain of the target
     EXPECT_EQ(long(f[3]), long(sim.grains().grains().size()));
     EXPECT_NEAR(sim.grains().grains().total_mass(), f[2], 1e-12);

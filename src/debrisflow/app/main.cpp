@@ -59,6 +59,21 @@ int check(const std::string& file, const std::vector<std::string>& sets) {
         }
         if (spec.rigid.dt > 0 && spec.rigid.dt < dt) dt = spec.rigid.dt, limiter = "rigid dt";
     }
+    for (const auto& w : spec.walls)
+        if (!w.structure.empty())
+            std::cout << fmt::format(
+                "structure '{}': {} of {} boxes, ({:.4g}, {:.4g}, {:.4g}) to "
+                "({:.4g}, {:.4g}, {:.4g}) m{}\n",
+                w.name, w.structure, w.boxes.size(), w.shape.min.x, w.shape.min.y, w.shape.min.z,
+                w.shape.max.x, w.shape.max.y, w.shape.max.z,
+                w.structure == "slit_dam" ? fmt::format(", slit density {:.4g}", w.slit_density)
+                                          : std::string());
+    for (const auto& in : spec.inlets)
+        std::cout << fmt::format("inlet '{}': Q(0) = {:.4g} m^3/s{}\n", in.name,
+                                 in.discharge.front(), in.times.size() > 1 ? " (hydrograph)" : "");
+    for (const auto& f : spec.dem.feeds)
+        std::cout << fmt::format("feed '{}': Q_s(0) = {:.4g} m^3/s of {} grains\n", f.name,
+                                 f.discharge.front(), f.material);
     std::cout << fmt::format("time step: {:.4g} s ({}); about {:.0f} steps to the end time\n", dt,
                              limiter, spec.t_end / dt);
     return 0;

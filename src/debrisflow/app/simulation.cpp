@@ -310,14 +310,13 @@ io::RunReport Simulation::run(const RunOptions& opt) {
             log_.line(fmt::format("design '{}': peak normal load {:.4g} at t = {:.4g} s; "
                                   "F = alpha rho v^2 h w with rho {:.4g}, v {:.4g} m/s, h {:.4g} "
                                   "m, w {:.4g} m gives alpha = {:.3g}",
-                                  d.probe, d.f_peak, d.f_peak_time, d.rho, d.v, d.h, d.w,
-                                  d.alpha));
+                                  d.probe, d.f_peak, d.f_peak_time, d.rho, d.v, d.h, d.w, d.alpha));
         if (d.hertz)
             log_.line(fmt::format("design '{}': Hertz boulder load {:.4g} N (m {:.4g} kg, r "
                                   "{:.4g} m, v {:.4g} m/s, E* {:.4g} Pa), K_c = {} -> {:.4g} N; "
                                   "measured bodies' peak {:.4g} N",
-                                  d.probe, d.f_hertz, d.mass, d.radius, d.v_impact, d.e_star,
-                                  d.k_c, d.k_c * d.f_hertz, d.f_bodies_peak));
+                                  d.probe, d.f_hertz, d.mass, d.radius, d.v_impact, d.e_star, d.k_c,
+                                  d.k_c * d.f_hertz, d.f_bodies_peak));
         if (!d.note.empty()) log_.line("design '" + d.probe + "': " + d.note);
     }
     if (files) {

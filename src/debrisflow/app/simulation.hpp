@@ -1,9 +1,9 @@
 #pragma once
+#include "debrisflow/core/log.hpp"
+#include "debrisflow/dem/dem_solver.hpp"
 #include "debrisflow/flow/fluid_inlet.hpp"
 #include "debrisflow/flow/grain_feed.hpp"
 #include "debrisflow/flow/outlet.hpp"
-#include "debrisflow/core/log.hpp"
-#include "debrisflow/dem/dem_solver.hpp"
 #include "debrisflow/io/case_spec.hpp"
 #include "debrisflow/io/summary.hpp"
 #include "debrisflow/io/vtk_writer.hpp"

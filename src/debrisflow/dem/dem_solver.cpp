@@ -463,8 +463,8 @@ void DemSolver::grains_added(Index old_count) {
     if (params_.dt <= 0) {
         std::vector<int> wall_materials;
         for (const auto& w : walls_.walls()) wall_materials.push_back(w.material);
-        const auto lim = critical_dt(grains_, wall_materials, materials_, table_, params_,
-                                     domain_, params_.safety);
+        const auto lim = critical_dt(grains_, wall_materials, materials_, table_, params_, domain_,
+                                     params_.safety);
         if (lim.dt < auto_dt_.dt) auto_dt_ = lim;
         dt_ = auto_dt_.dt;
     }
@@ -476,8 +476,8 @@ void DemSolver::include_sizes(const GrainSet& prototypes) {
     for (const auto& w : walls_.walls()) wall_materials.push_back(w.material);
     for (Real r : prototypes.radius) max_radius_ = std::max(max_radius_, r);
     skin_ = params_.skin * 2 * max_radius_;
-    const auto lim =
-        critical_dt(prototypes, wall_materials, materials_, table_, params_, domain_, params_.safety);
+    const auto lim = critical_dt(prototypes, wall_materials, materials_, table_, params_, domain_,
+                                 params_.safety);
     if (lim.dt < auto_dt_.dt) auto_dt_ = lim;
     const auto stab = critical_dt(prototypes, wall_materials, materials_, table_, params_, domain_,
                                   stability_fraction);

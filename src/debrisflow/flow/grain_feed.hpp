@@ -23,9 +23,9 @@ public:
 
     const std::string& name() const { return spec_.name; }
     Real discharge(Real t) const { return q_.at(t); } // target [m^3/s of solid]
-    Real volume_in() const { return volume_in_; }      // solid volume released [m^3]
-    Real mass_in() const { return mass_in_; }          // [kg]
-    Real owed() const { return owed_; }                // solid volume not yet placed [m^3]
+    Real volume_in() const { return volume_in_; }     // solid volume released [m^3]
+    Real mass_in() const { return mass_in_; }         // [kg]
+    Real owed() const { return owed_; }               // solid volume not yet placed [m^3]
     long grains_in() const { return count_; }
     // One grain of the smallest size the feed can release (for the DEM time step).
     Real smallest_diameter() const { return spec_.size.min; }

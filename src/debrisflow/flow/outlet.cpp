@@ -11,7 +11,8 @@ void Outlet::apply(sph::SphSolver* fluid, dem::DemSolver* grains) {
         std::vector<std::uint8_t> keep(std::size_t(n), 1);
         bool any = false;
         for (Index i = 0; i < n; ++i) {
-            if (s.kind[i] != std::uint8_t(particles::Kind::fluid) || !inside(s.x[i], s.y[i], s.z[i]))
+            if (s.kind[i] != std::uint8_t(particles::Kind::fluid) ||
+                !inside(s.x[i], s.y[i], s.z[i]))
                 continue;
             keep[std::size_t(i)] = 0;
             any = true;

@@ -71,9 +71,8 @@ void read_rheology(const ConfigTable& t, sph::SphParams& p) {
         t.fail("flow_index", "a Bingham fluid has n = 1; use viscosity = \"herschel_bulkley\"");
     r.regularization = t.positive("regularization");
     // With n >= 1 the apparent viscosity is largest at rest: mu_p + tau_y m (+ the base).
-    const Real natural = r.flow_index >= 1 ? p.rho0 * p.nu + r.consistency +
-                                                 r.yield_stress * r.regularization
-                                           : 0;
+    const Real natural =
+        r.flow_index >= 1 ? p.rho0 * p.nu + r.consistency + r.yield_stress * r.regularization : 0;
     if (natural > 0)
         r.mu_max = t.positive("mu_max", natural);
     else
@@ -104,8 +103,8 @@ void read_sph(const ConfigTable& t, CaseSpec& c) {
     if (p.alpha < 0) t.fail("alpha", "must be >= 0");
     p.boundary_factor = t.real("boundary_factor", 1);
     if (p.boundary_factor < 0) t.fail("boundary_factor", "must be >= 0");
-    const bool slurry = p.viscosity == "bingham" || p.viscosity == "herschel_bulkley" ||
-                        p.viscosity == "mu_i";
+    const bool slurry =
+        p.viscosity == "bingham" || p.viscosity == "herschel_bulkley" || p.viscosity == "mu_i";
     if (p.viscosity != "artificial" && !slurry)
         p.nu = t.positive("nu");
     else if (t.has("nu"))
@@ -155,15 +154,14 @@ sph::Domain read_domain(const ConfigTable& t, int dim) {
 ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
     ProbeSpec p;
     p.name = t.string("name");
-    p.type = t.choice("type", {"pressure", "gauge", "velocity", "front", "wall_force", "section",
-                               "kinetic_energy", "runup", "mass_flux", "body", "discharge",
-                               "trapping", "deposit", "flow_section", "fluid_runup",
-                               "pressure_map"});
+    p.type =
+        t.choice("type", {"pressure", "gauge", "velocity", "front", "wall_force", "section",
+                          "kinetic_energy", "runup", "mass_flux", "body", "discharge", "trapping",
+                          "deposit", "flow_section", "fluid_runup", "pressure_map"});
     p.every = t.positive("every", 0.001);
-    const bool fluid_probe = p.type == "pressure" || p.type == "velocity" ||
-                             p.type == "gauge" || p.type == "front" ||
-                             p.type == "flow_section" || p.type == "fluid_runup" ||
-                             p.type == "pressure_map";
+    const bool fluid_probe = p.type == "pressure" || p.type == "velocity" || p.type == "gauge" ||
+                             p.type == "front" || p.type == "flow_section" ||
+                             p.type == "fluid_runup" || p.type == "pressure_map";
     if (fluid_probe && c.fluids.empty()) t.fail("type", "a " + p.type + " probe needs a fluid");
     const bool grain_probe = p.type == "section" || p.type == "kinetic_energy" ||
                              p.type == "runup" || p.type == "mass_flux";
@@ -190,7 +188,8 @@ ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
             if (!(p.max[d] > p.min[d])) t.fail("max", "must exceed min");
         p.bed = t.real("bed", p.min.z);
     } else if (p.type == "trapping") {
-        if (!c.has_dem && !c.has_bodies()) t.fail("type", "a trapping probe needs grains or bodies");
+        if (!c.has_dem && !c.has_bodies())
+            t.fail("type", "a trapping probe needs grains or bodies");
         p.position = t.vec3("upstream", c.dim);
         p.point_b = t.vec3("downstream", c.dim);
         p.normal = t.vec3("normal", c.dim, {1, 0, 0});

@@ -149,7 +149,7 @@ struct ProbeSpec {
     Vec3 min, max; // kinetic_energy: box; section: window
     Real bed = 0;  // section, runup: bed elevation z [m]
     Vec3 point_b;  // trapping: the downstream plane's point (position: the upstream one)
-    Real t0 = 0, t1 = 1e30;    // trapping: counting window [s]
+    Real t0 = 0, t1 = 1e30;         // trapping: counting window [s]
     int panels_u = 1, panels_v = 1; // pressure_map: panels along the face's two axes
     // wall_force design companions: approach-flow probe (flow_section or section), impact
     // width [m] and bulk density [kg/m^3] (0: from the probe) for F = alpha rho v^2 h w; a body

@@ -152,7 +152,8 @@ FeedSpec read_feed(const ConfigTable& t, const CaseSpec& c) {
     f.max = t.vec3("max", c.dim);
     for (int k = 0; k < 3; ++k)
         if (!(c.dim == 2 && k == 1) && !(f.max[k] - f.min[k] > f.size.max))
-            t.fail("max", fmt::format("the region must exceed the largest diameter in {}", "xyz"[k]));
+            t.fail("max",
+                   fmt::format("the region must exceed the largest diameter in {}", "xyz"[k]));
     if (t.has("times")) {
         f.times = t.reals("times");
         f.discharge = t.reals("discharge");

@@ -11,7 +11,9 @@ constexpr Real pi = 3.14159265358979323846;
 
 using Box = std::array<Vec3, 2>;
 
-Box box(Vec3 lo, Vec3 hi) { return {lo, hi}; }
+Box box(Vec3 lo, Vec3 hi) {
+    return {lo, hi};
+}
 
 // Slope angle [rad] of a flume table, or nullopt.
 std::optional<Real> slope_of(const ConfigTable& t) {
@@ -172,11 +174,11 @@ void read_structures(const ConfigTable& root, CaseSpec& c) {
         WallSpec w;
         w.name = t.string("name");
         for (const auto& o : c.walls)
-            if (o.name == w.name) t.fail("name", "a wall or structure is already named \"" +
-                                                     w.name + "\"");
+            if (o.name == w.name)
+                t.fail("name", "a wall or structure is already named \"" + w.name + "\"");
         w.type = "boxes";
-        w.structure = t.choice("type", {"flume", "check_dam", "slit_dam", "baffles", "gate",
-                                        "hopper"});
+        w.structure =
+            t.choice("type", {"flume", "check_dam", "slit_dam", "baffles", "gate", "hopper"});
         if (fluid) {
             w.layers = int(t.integer("layers", long(std::ceil(support / c.dp - 1e-9))));
             if (w.layers < 1) t.fail("layers", "must be >= 1");
@@ -224,8 +226,8 @@ void read_structures(const ConfigTable& root, CaseSpec& c) {
                 (w.shape.min[d] < c.domain.lo[d] || w.shape.max[d] > c.domain.hi[d]))
                 t.fail("type", fmt::format("the structure ({:.4g}..{:.4g} m in {}) leaves the "
                                            "domain ({:.4g}..{:.4g} m)",
-                                           w.shape.min[d], w.shape.max[d], "xyz"[d],
-                                           c.domain.lo[d], c.domain.hi[d]));
+                                           w.shape.min[d], w.shape.max[d], "xyz"[d], c.domain.lo[d],
+                                           c.domain.hi[d]));
         t.finish();
         c.walls.push_back(w);
     }

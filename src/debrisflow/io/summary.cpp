@@ -64,6 +64,16 @@ void write_summary(const std::string& path, const CaseSpec& spec, const RunRepor
     o << fmt::format("  \"timings\": {{\"neighbors\": {}, \"forces\": {}, \"integration\": {}, "
                      "\"output\": {}}},\n",
                      num(t.neighbors), num(t.forces), num(t.integration), num(t.output));
+    bool first = true;
+    for (const auto& w : spec.walls) {
+        if (w.structure.empty()) continue;
+        o << (first ? "  \"structures\": [" : ",") << "\n    {\"name\": " << quoted(w.name)
+          << ", \"type\": " << quoted(w.structure) << ", \"boxes\": " << w.boxes.size();
+        if (w.structure == "slit_dam") o << ", \"slit_density\": " << num(w.slit_density);
+        o << "}";
+        first = false;
+    }
+    if (!first) o << "\n  ],\n";
     if (!design.empty()) {
         o << "  \"design\": [";
         for (std::size_t k = 0; k < design.size(); ++k) {

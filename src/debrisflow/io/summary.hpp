@@ -1,6 +1,6 @@
 #pragma once
-#include "debrisflow/probes/design_formulas.hpp"
 #include "debrisflow/io/case_spec.hpp"
+#include "debrisflow/probes/design_formulas.hpp"
 #include "debrisflow/probes/probe.hpp"
 #include "debrisflow/time/integrator.hpp"
 #include <memory>
@@ -22,7 +22,7 @@ struct RunReport {
     long pair_list_builds = 0;
     long fluid_end = 0, grains_end = 0; // at the end (inlets, feeds and outlets change them)
     double particle_steps = 0; // sum over steps of the particles present (fluid, walls, grains)
-    std::size_t pairs = 0; // half pair list entries at the end (pairs within support + skin)
+    std::size_t pairs = 0;     // half pair list entries at the end (pairs within support + skin)
 };
 
 // summary.json: counts, steps, times, throughput, timing breakdown and probe peaks/finals.

@@ -45,8 +45,8 @@ struct HerschelBulkleyViscosity : GeneralisedNewtonian {
 
     DF_HD Real apparent_viscosity(Real gdot, Real /*p*/) const {
         const Real g = gdot > Real(1e-12) ? gdot : Real(1e-12);
-        const Real power = flow_index == 1 ? consistency
-                                           : consistency * std::pow(g, flow_index - 1);
+        const Real power =
+            flow_index == 1 ? consistency : consistency * std::pow(g, flow_index - 1);
         return capped(mu_base + power + yield_stress * papanastasiou_factor(regularization, gdot));
     }
 };

@@ -4,9 +4,9 @@ namespace debrisflow::particles {
 
 namespace {
 template <class Fn> void for_each_field(ParticleSet& s, Fn&& fn) {
-    for (auto* f : {&s.x,   &s.y,   &s.z,   &s.vx,     &s.vy,     &s.vz,     &s.ax,
-                    &s.ay,  &s.az,  &s.rho, &s.drho,   &s.p,      &s.mass,   &s.wnx,
-                    &s.wny, &s.wnz, &s.wd,  &s.mu, &s.vx_old, &s.vy_old, &s.vz_old, &s.rho_old})
+    for (auto* f : {&s.x,  &s.y,   &s.z,      &s.vx,     &s.vy,     &s.vz,     &s.ax,  &s.ay,
+                    &s.az, &s.rho, &s.drho,   &s.p,      &s.mass,   &s.wnx,    &s.wny, &s.wnz,
+                    &s.wd, &s.mu,  &s.vx_old, &s.vy_old, &s.vz_old, &s.rho_old})
         fn(*f);
     fn(s.kind);
     fn(s.group);
@@ -79,9 +79,9 @@ void ParticleSet::set_wall(Index i, Vec3 normal, Real depth) {
 }
 
 ParticleView ParticleSet::view() {
-    return {x.data(),   y.data(),   z.data(),   vx.data(),   vy.data(),    vz.data(),   ax.data(),
-            ay.data(),  az.data(),  rho.data(), drho.data(), p.data(),     mass.data(), wnx.data(),
-            wny.data(), wnz.data(), wd.data(),  mu.data(), kind.data(), group.data(), size()};
+    return {x.data(),   y.data(),   z.data(),   vx.data(),   vy.data(),   vz.data(),    ax.data(),
+            ay.data(),  az.data(),  rho.data(), drho.data(), p.data(),    mass.data(),  wnx.data(),
+            wny.data(), wnz.data(), wd.data(),  mu.data(),   kind.data(), group.data(), size()};
 }
 
 } // namespace debrisflow::particles

@@ -32,7 +32,7 @@ static_assert(std::is_trivially_copyable_v<ParticleView>);
 class ParticleSet {
 public:
     std::vector<Real> x, y, z, vx, vy, vz, ax, ay, az, rho, drho, p, mass;
-    std::vector<Real> wnx, wny, wnz, wd;               // zero for fluid particles
+    std::vector<Real> wnx, wny, wnz, wd; // zero for fluid particles
     std::vector<Real> mu; // apparent dynamic viscosity [Pa s]; 0 for artificial viscosity
     std::vector<Real> vx_old, vy_old, vz_old, rho_old; // state at t_(n-1), Verlet scheme only
     std::vector<std::uint8_t> kind;

@@ -66,7 +66,8 @@ std::vector<DesignCheck> design_checks(const io::CaseSpec& c,
             const int vx = column(*bprobe, "vx");
             for (const auto& row : bprobe->history()) {
                 const Real* v = &row[std::size_t(vx) + 1];
-                d.v_impact = std::max(d.v_impact, std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+                d.v_impact =
+                    std::max(d.v_impact, std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
             }
             // Wall material: the wall's own, or the body's (as the contact laws default).
             int wm = -1;
@@ -86,8 +87,8 @@ std::vector<DesignCheck> design_checks(const io::CaseSpec& c,
             } else {
                 d.e_star = 1 / (compliance(mb) + compliance(mw));
                 d.mass = b->mass;
-                d.radius = c.dim == 3 ? std::cbrt(3 * b->volume / (4 * pi))
-                                      : std::sqrt(b->volume / pi);
+                d.radius =
+                    c.dim == 3 ? std::cbrt(3 * b->volume / (4 * pi)) : std::sqrt(b->volume / pi);
                 d.k_c = spec.k_c;
                 d.f_hertz = hertz_impact_force(d.mass, d.radius, d.v_impact, d.e_star);
                 d.hertz = true;

@@ -29,7 +29,7 @@ public:
     OutletProbe(const flow::Outlet& outlet, Real every)
         : Probe(outlet.name(), every), outlet_(outlet) {}
     std::vector<std::string> columns() const override {
-        return {"fluid_mass [kg]",  "fluid_volume [m3]", "grain_mass [kg]",
+        return {"fluid_mass [kg]",   "fluid_volume [m3]", "grain_mass [kg]",
                 "grain_volume [m3]", "fluid_rate [kg/s]", "grain_rate [kg/s]"};
     }
     std::vector<Real> sample(Real t, const ProbeContext&) override {
@@ -37,8 +37,12 @@ public:
         const Real qf = dt > 0 ? (outlet_.fluid_mass() - fluid_last_) / dt : 0;
         const Real qg = dt > 0 ? (outlet_.grain_mass() - grain_last_) / dt : 0;
         t_last_ = t, fluid_last_ = outlet_.fluid_mass(), grain_last_ = outlet_.grain_mass();
-        return {outlet_.fluid_mass(), outlet_.fluid_volume(), outlet_.grain_mass(),
-                outlet_.grain_volume(), qf, qg};
+        return {outlet_.fluid_mass(),
+                outlet_.fluid_volume(),
+                outlet_.grain_mass(),
+                outlet_.grain_volume(),
+                qf,
+                qg};
     }
 
 private:

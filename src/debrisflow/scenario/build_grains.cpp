@@ -1,6 +1,6 @@
 #include "debrisflow/scenario/build_grains.hpp"
-#include "debrisflow/scenario/size_sampler.hpp"
 #include "debrisflow/core/error.hpp"
+#include "debrisflow/scenario/size_sampler.hpp"
 #include "debrisflow/scenario/stl_mesh.hpp"
 #include <algorithm>
 #include <cmath>

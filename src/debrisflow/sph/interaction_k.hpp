@@ -41,8 +41,8 @@ template <class Kernel, class Viscosity, class Diffusion> struct PairTerms {
         bool fluid;
     };
     DF_HD Side side(Index i) const {
-        return {pv.pos(i), pv.vel(i), pv.rho[i], prho[i], cs[i],
-                pv.mass[i], vol[i],   pv.mu[i],  pv.is_fluid(i)};
+        return {pv.pos(i),  pv.vel(i), pv.rho[i], prho[i],       cs[i],
+                pv.mass[i], vol[i],    pv.mu[i],  pv.is_fluid(i)};
     }
 
     DF_HD Result operator()(Index i, Index j, Vec3 r, Real r2) const {

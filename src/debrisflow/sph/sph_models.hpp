@@ -8,10 +8,9 @@
 namespace debrisflow::sph {
 
 // Model families of the WCSPH solver, each selectable by name in the case file.
-using ViscosityRegistry =
-    models::Registry<models::ArtificialViscosity, models::LaminarViscosity,
-                     models::LaminarSpsViscosity, models::BinghamViscosity,
-                     models::HerschelBulkleyViscosity, models::MuIViscosity>;
+using ViscosityRegistry = models::Registry<models::ArtificialViscosity, models::LaminarViscosity,
+                                           models::LaminarSpsViscosity, models::BinghamViscosity,
+                                           models::HerschelBulkleyViscosity, models::MuIViscosity>;
 using DiffusionRegistry =
     models::Registry<models::NoDiffusion, models::MolteniColagrossi, models::Fourtakas>;
 using Viscosity = ViscosityRegistry::Variant;

@@ -20,11 +20,11 @@ struct SphParams {
     Real nu = 1e-6; // laminar models; base (Newtonian) part of the slurry models
     // Slurry rheology (viscosity = "bingham", "herschel_bulkley", "mu_i").
     struct Rheology {
-        Real yield_stress = 0;     // tau_y [Pa]
-        Real consistency = 0;      // K [Pa s^n] (Bingham: plastic viscosity)
-        Real flow_index = 1;       // n
-        Real regularization = 0;   // Papanastasiou m [s]
-        Real mu_max = 0;           // cap of the apparent viscosity [Pa s]
+        Real yield_stress = 0;                     // tau_y [Pa]
+        Real consistency = 0;                      // K [Pa s^n] (Bingham: plastic viscosity)
+        Real flow_index = 1;                       // n
+        Real regularization = 0;                   // Papanastasiou m [s]
+        Real mu_max = 0;                           // cap of the apparent viscosity [Pa s]
         Real mu_s = 0.38, mu_2 = 0.64, i0 = 0.279; // mu(I) (Jop et al. 2006)
         Real grain_diameter = 0.001, grain_density = 2500;
     } rheology;

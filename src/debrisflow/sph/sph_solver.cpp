@@ -110,12 +110,10 @@ Real SphSolver::max_kinematic_viscosity() const {
         [](const auto& v) { return std::decay_t<decltype(v)>::needs_apparent_viscosity; },
         models_.viscosity);
     if (!apparent)
-        return std::visit([](const auto& v) { return v.kinematic_viscosity(); },
-                          models_.viscosity);
+        return std::visit([](const auto& v) { return v.kinematic_viscosity(); }, models_.viscosity);
     auto pv = const_cast<particles::ParticleSet&>(set_).view();
-    return exec::max_of(pv.n, [=](Index i) {
-        return pv.is_fluid(i) ? pv.mu[i] / pv.rho[i] : Real(0);
-    });
+    return exec::max_of(pv.n,
+                        [=](Index i) { return pv.is_fluid(i) ? pv.mu[i] / pv.rho[i] : Real(0); });
 }
 
 template <class F> void SphSolver::with_pair_terms(F&& f) {
