@@ -193,3 +193,71 @@ height = 0.15
     // 2D: each box gives 4 faces of 2 triangles (y faces left out); bed and dam: 16.
     EXPECT_EQ(sim.grains().walls().primitives().size(), 16u);
 }
+
+// The baffle study's slurries (nu = 0.1, 1, 5 m^2/s): the viscous limit 0.125 h^2 / nu (Morris
+// et al. 1997, eq. 19) sets dt and is reported; for a Bingham slurry the limit follows the
+// largest apparent viscosity present, which at rest is mu_w + mu_p + tau_y m (mu_w = rho0 nu, the
+// interstitial water). (c0 = 3 m/s keeps the
+// CFL step, 2e-3 s, above the viscous one; the runs last 0.01 s.)
+TEST(ViscousTimeStep, NewtonianAndBinghamLimitsAreReported) {
+    const std::string base = R"(
+dimensions = 2
+dp = 0.02
+[time]
+end = 0.01
+[output]
+vtk = false
+[domain]
+min = [-0.1, -0.1]
+max = [1.0, 1.0]
+[sph]
+c0 = 3
+viscosity = "laminar"
+nu = 1.0
+[[fluid]]
+name = "slurry"
+shape = "box"
+min = [0, 0]
+max = [0.4, 0.4]
+[[wall]]
+name = "tank"
+shape = "open_tank"
+min = [0, 0]
+max = [0.9, 0.8]
+)";
+    const double h = 1.5 * 0.02;
+    for (double nu : {0.1, 1.0, 5.0}) {
+        app::Simulation sim(
+            test::case_from_toml("viscous_dt", base, {fmt::format("sph.nu={}", nu)}));
+        const auto lim = sim.solver().initial_dt();
+        EXPECT_EQ(lim.limiter, "viscous") << nu;
+        EXPECT_NEAR(lim.dt, 0.125 * h * h / nu, 1e-15) << nu;
+        sim.run({"", true, 0});
+        // Once the column moves, the sound speed of the Tait state rises: at nu = 0.1 the CFL
+        // step may take over; the viscous limit is never exceeded.
+        const auto now = sim.solver().stable_dt();
+        EXPECT_LE(now.dt, 0.125 * h * h / nu * (1 + 1e-12)) << nu;
+        if (nu >= 1.0) {
+            EXPECT_EQ(now.limiter, "viscous") << nu;
+            EXPECT_NEAR(now.dt, 0.125 * h * h / nu, 1e-15) << nu;
+        }
+    }
+    app::Simulation sim(
+        test::case_from_toml("bingham_dt", base,
+                             {"sph.viscosity=\"bingham\"", "sph.nu=1e-6", "sph.consistency=50",
+                              "sph.yield_stress=100", "sph.regularization=2"}));
+    sim.run({"", true, 0});
+    // A column at rest barely shears: some particle sits near mu_w + mu_p + tau_y m = 250 Pa s.
+    const auto lim = sim.solver().stable_dt();
+    EXPECT_EQ(lim.limiter, "viscous");
+    const auto& s = sim.particles();
+    double nu_max = 0, mu_max = 0;
+    for (Index i = 0; i < s.size(); ++i)
+        if (s.kind[i] == 0) {
+            nu_max = std::max(nu_max, s.mu[i] / s.rho[i]);
+            mu_max = std::max(mu_max, double(s.mu[i]));
+        }
+    EXPECT_NEAR(lim.dt, 0.125 * h * h / nu_max, 1e-15);
+    EXPECT_LE(mu_max, 250.001 * (1 + 1e-12));
+    EXPECT_GT(mu_max, 0.5 * 250.0);
+}

@@ -50,7 +50,8 @@ Simulation::Simulation(io::CaseSpec spec) : spec_(std::move(spec)) {
     for (const auto& p : spec_.probes) probes_.push_back(probes::make_probe(p, spec_));
     for (const auto& in : spec_.inlets) {
         inlets_.push_back(std::make_unique<flow::FluidInlet>(in, spec_));
-        probes_.push_back(std::make_unique<probes::InletProbe>(*inlets_.back(), in.every));
+        probes_.push_back(
+            std::make_unique<probes::InletProbe>(*inlets_.back(), in.every, spec_.dim == 2));
     }
     for (const auto& f : spec_.dem.feeds) {
         feeds_.push_back(std::make_unique<flow::GrainFeed>(f, spec_));
@@ -64,7 +65,8 @@ Simulation::Simulation(io::CaseSpec spec) : spec_(std::move(spec)) {
     }
     for (const auto& out : spec_.outlets) {
         outlets_.push_back(std::make_unique<flow::Outlet>(out, spec_.sph.rho0));
-        probes_.push_back(std::make_unique<probes::OutletProbe>(*outlets_.back(), out.every));
+        probes_.push_back(
+            std::make_unique<probes::OutletProbe>(*outlets_.back(), out.every, spec_.dim == 2));
     }
 }
 

@@ -66,8 +66,8 @@ std::vector<std::string> DischargeProbe::columns() const {
         c.insert(c.end(), {"fluid [kg/s" + unit_ + "]", "fluid_Q [m3/s" + unit_ + "]",
                            "fluid_cumulative [kg" + unit_ + "]"});
     if (solids_)
-        c.insert(c.end(), {"solid [kg/s" + unit_ + "]", "solid_Q [m3/s" + unit_ + "]",
-                           "solid_cumulative [kg" + unit_ + "]"});
+        // 2D grains are discs of the case's thickness (kg); 2D bodies are per metre.
+        c.insert(c.end(), {"solid [kg/s]", "solid_Q [m3/s]", "solid_cumulative [kg]"});
     return c;
 }
 

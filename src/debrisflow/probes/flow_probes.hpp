@@ -9,10 +9,12 @@ namespace debrisflow::probes {
 // probes/<inlet>.csv: the imposed discharge and what has entered.
 class InletProbe : public Probe {
 public:
-    InletProbe(const flow::FluidInlet& inlet, Real every)
-        : Probe(inlet.name(), every), inlet_(inlet) {}
+    // per_metre: a 2D case (quantities per metre of width, "/m" in the headers).
+    InletProbe(const flow::FluidInlet& inlet, Real every, bool per_metre)
+        : Probe(inlet.name(), every), inlet_(inlet), unit_(per_metre ? "/m" : "") {}
     std::vector<std::string> columns() const override {
-        return {"Q [m3/s]", "U [m/s]", "mass_in [kg]", "volume_in [m3]"};
+        return {"Q [m3/s" + unit_ + "]", "U [m/s]", "mass_in [kg" + unit_ + "]",
+                "volume_in [m3" + unit_ + "]"};
     }
     std::vector<Real> sample(Real t, const ProbeContext&) override {
         return {inlet_.discharge(t), inlet_.velocity(t), inlet_.mass_in(), inlet_.volume_in()};
@@ -20,17 +22,24 @@ public:
 
 private:
     const flow::FluidInlet& inlet_;
+    std::string unit_;
 };
 
 // probes/<outlet>.csv: cumulative mass and volume removed by phase, and the mean rates over the
 // sampling interval (what left per second).
 class OutletProbe : public Probe {
 public:
-    OutletProbe(const flow::Outlet& outlet, Real every)
-        : Probe(outlet.name(), every), outlet_(outlet) {}
+    // per_metre: a 2D case; fluid columns are per metre of width, grains (discs of the case's
+    // thickness) stay in kg.
+    OutletProbe(const flow::Outlet& outlet, Real every, bool per_metre)
+        : Probe(outlet.name(), every), outlet_(outlet), unit_(per_metre ? "/m" : "") {}
     std::vector<std::string> columns() const override {
-        return {"fluid_mass [kg]",   "fluid_volume [m3]", "grain_mass [kg]",
-                "grain_volume [m3]", "fluid_rate [kg/s]", "grain_rate [kg/s]"};
+        return {"fluid_mass [kg" + unit_ + "]",
+                "fluid_volume [m3" + unit_ + "]",
+                "grain_mass [kg]",
+                "grain_volume [m3]",
+                "fluid_rate [kg/s" + unit_ + "]",
+                "grain_rate [kg/s]"};
     }
     std::vector<Real> sample(Real t, const ProbeContext&) override {
         const Real dt = t - t_last_;
@@ -47,6 +56,7 @@ public:
 
 private:
     const flow::Outlet& outlet_;
+    std::string unit_;
     Real t_last_ = 0, fluid_last_ = 0, grain_last_ = 0;
 };
 
