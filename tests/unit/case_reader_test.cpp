@@ -138,3 +138,48 @@ slit_width = 0.05
     e = error_of(std::string(minimal) + "[[structure]]\nname = \"x\"\ntype = \"weir\"\n");
     EXPECT_NE(e.find("unknown choice \"weir\""), std::string::npos) << e;
 }
+
+// Rock feeds: 3D only, the shape files must exist, the sphericity bound is a fraction.
+TEST(CaseReader, RockFeedErrorsNameTheKey) {
+    const std::string feed = R"(
+[[material]]
+name = "rock"
+law = "hertz_mindlin"
+density = 2650
+youngs_modulus = 1e7
+poisson = 0.3
+restitution = 0.5
+friction = 0.5
+[[feed]]
+name = "hopper"
+material = "rock"
+min = [0, 0]
+max = [0.2, 0.2]
+diameter = 0.02
+discharge = 1e-4
+rocks = ["no_such_rock.stl"]
+)";
+    std::string e = error_of(std::string(minimal) + feed);
+    EXPECT_NE(e.find("'feed.0.rocks'"), std::string::npos) << e;
+    EXPECT_NE(e.find("need dimensions = 3"), std::string::npos) << e;
+    std::string three = minimal;
+    three.replace(three.find("[-0.1, -0.1]"), 12, "[-0.1, -0.1, -0.1]");
+    three.replace(three.find("[1.0, 1.0]"), 10, "[1.0, 1.0, 1.0]");
+    three.replace(three.find("min = [0, 0]"), 12, "min = [0, 0, 0]");
+    three.replace(three.find("max = [0.2, 0.2]"), 16, "max = [0.2, 0.2, 0.2]");
+    std::string feed3 = feed;
+    feed3.replace(feed3.find("min = [0, 0]"), 12, "min = [0, 0, 0.3]");
+    feed3.replace(feed3.find("max = [0.2, 0.2]"), 16, "max = [0.2, 0.2, 0.5]");
+    e = error_of("dimensions = 3\n" + three + feed3);
+    EXPECT_NE(e.find("mesh file not found"), std::string::npos) << e;
+    EXPECT_NE(e.find("no_such_rock.stl"), std::string::npos) << e;
+    const std::string lib = std::string(DEBRISFLOW_SOURCE_DIR) + "/cases/shapes/rock_a.stl";
+    feed3.replace(feed3.find("no_such_rock.stl"), 16, lib);
+    e = error_of("dimensions = 3\n" + three + feed3 + "sphericity_tolerance = 15\n");
+    EXPECT_NE(e.find("'feed.0.sphericity_tolerance'"), std::string::npos) << e;
+    const auto c = test::case_from_toml("rock_feed_ok", "dimensions = 3\n" + three + feed3);
+    ASSERT_EQ(c.rigid.feeds.size(), 1u);
+    EXPECT_TRUE(c.dem.feeds.empty());
+    EXPECT_TRUE(c.has_bodies());
+    EXPECT_NEAR(c.rigid.feeds[0].sphericity_tolerance, 0.15, 1e-15);
+}

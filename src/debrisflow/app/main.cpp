@@ -74,6 +74,11 @@ int check(const std::string& file, const std::vector<std::string>& sets) {
     for (const auto& f : spec.dem.feeds)
         std::cout << fmt::format("feed '{}': Q_s(0) = {:.4g} m^3/s of {} grains\n", f.name,
                                  f.discharge.front(), f.material);
+    for (const auto& f : spec.rigid.feeds)
+        std::cout << fmt::format(
+            "feed '{}': Q_s(0) = {:.4g} m^3/s of rocks of material '{}' ({} shapes, "
+            "sphericity within +-{:.0f} %)\n",
+            f.name, f.discharge.front(), f.material, f.rocks.size(), 100 * f.sphericity_tolerance);
     std::cout << fmt::format("time step: {:.4g} s ({}); about {:.0f} steps to the end time\n", dt,
                              limiter, spec.t_end / dt);
     return 0;

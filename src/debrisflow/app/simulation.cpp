@@ -55,13 +55,18 @@ Simulation::Simulation(io::CaseSpec spec) : spec_(std::move(spec)) {
     }
     for (const auto& f : spec_.dem.feeds) {
         feeds_.push_back(std::make_unique<flow::GrainFeed>(f, spec_));
-        probes_.push_back(std::make_unique<probes::FeedProbe>(*feeds_.back(), f.every));
+        probes_.push_back(std::make_unique<probes::FeedProbe>(*feeds_.back(), f.every, "grains"));
         // The DEM step must hold for the smallest grain the feed can release.
         dem::GrainSet prototype;
         for (Real d : {f.size.min, f.size.max})
             scenario::add_grain(spec_, prototype, {}, {}, {}, d,
                                 scenario::material_index(spec_, f.material));
         dem_->include_sizes(prototype);
+    }
+    for (const auto& f : spec_.rigid.feeds) {
+        rock_feeds_.push_back(std::make_unique<flow::RockFeed>(f, spec_));
+        probes_.push_back(
+            std::make_unique<probes::FeedProbe>(*rock_feeds_.back(), f.every, "rocks"));
     }
     for (const auto& out : spec_.outlets) {
         outlets_.push_back(std::make_unique<flow::Outlet>(out, spec_.sph.rho0));
@@ -169,12 +174,14 @@ io::RunReport Simulation::run(const RunOptions& opt) {
     if (rigid_)
         for (std::size_t b = 0; b < rigid_->bodies().size(); ++b) {
             const auto& s = rigid_->bodies()[b];
-            log_.line(fmt::format("body '{}': {} motion, mass {:.6g} kg, centre of mass ({:.5g}, "
-                                  "{:.5g}, {:.5g}) m, principal moments ({:.5g}, {:.5g}, {:.5g}) "
-                                  "kg m^2",
-                                  rigid_->models()[b].name, spec_.rigid.bodies[b].motion, s.mass,
-                                  s.pos.x, s.pos.y, s.pos.z, 1 / s.inv_inertia.x,
-                                  1 / s.inv_inertia.y, 1 / s.inv_inertia.z));
+            log_.line(
+                fmt::format("body '{}': {} motion, mass {:.6g} kg, centre of mass ({:.5g}, "
+                            "{:.5g}, {:.5g}) m, principal moments ({:.5g}, {:.5g}, {:.5g}) "
+                            "kg m^2",
+                            rigid_->models()[b].name,
+                            b < spec_.rigid.bodies.size() ? spec_.rigid.bodies[b].motion : "free",
+                            s.mass, s.pos.x, s.pos.y, s.pos.z, 1 / s.inv_inertia.x,
+                            1 / s.inv_inertia.y, 1 / s.inv_inertia.z));
         }
     if (dem_ && spec_.dem.settle && !settled_ && t_ == 0) {
         try {
@@ -215,10 +222,12 @@ io::RunReport Simulation::run(const RunOptions& opt) {
         });
     }
     // Open boundaries act between the integration and the neighbour search of each step.
-    if (!inlets_.empty() || !outlets_.empty() || !feeds_.empty())
+    if (!inlets_.empty() || !outlets_.empty() || !feeds_.empty() || !rock_feeds_.empty())
         integ.add_hook(time::Hook::after_integration, [this](const time::StepInfo& s) {
             for (auto& in : inlets_) in->apply(set_, s.t, s.dt);
             for (auto& f : feeds_) f->apply(*dem_, s.t, s.dt);
+            for (auto& f : rock_feeds_)
+                f->apply(*rigid_, dem_ ? &grains_ : nullptr, solver_ ? &set_ : nullptr, s.t, s.dt);
             for (auto& out : outlets_) out->apply(solver_.get(), dem_.get());
         });
     for (auto& p : probes_) {
@@ -264,6 +273,7 @@ io::RunReport Simulation::run(const RunOptions& opt) {
 
     auto finish_stats = [&]() {
         report.particle_steps = particle_steps;
+        if (rigid_) report.bodies = long(rigid_->bodies().size()); // rock feeds add bodies
         report.fluid_end = set_.count(particles::Kind::fluid);
         report.grains_end = grains_.size();
         if (solver_) {
@@ -294,6 +304,7 @@ io::RunReport Simulation::run(const RunOptions& opt) {
     }
     const auto& r = report.result;
     report.particle_steps = particle_steps;
+    if (rigid_) report.bodies = long(rigid_->bodies().size()); // rock feeds add bodies
     const double pss = r.wall_seconds > 0 ? particle_steps / r.wall_seconds : 0;
     log_.line(fmt::format("finished: {} steps to t = {:.6g} s in {:.2f} s wall, {:.3g} "
                           "particle-steps/s (neighbours {:.2f} s, forces {:.2f} s, integration "
@@ -304,8 +315,7 @@ io::RunReport Simulation::run(const RunOptions& opt) {
     if (rigid_)
         for (std::size_t b = 0; b < rigid_->bodies().size(); ++b)
             body_info.push_back({rigid_->models()[b].name, rigid_->bodies()[b].mass,
-                                 rigid_->models()[b].volume,
-                                 scenario::material_index(spec_, spec_.rigid.bodies[b].material)});
+                                 rigid_->models()[b].volume, rigid_->bodies()[b].material});
     const auto design = probes::design_checks(spec_, probes_, body_info);
     for (const auto& d : design) {
         if (d.hydro)

@@ -4,6 +4,7 @@
 #include "debrisflow/flow/fluid_inlet.hpp"
 #include "debrisflow/flow/grain_feed.hpp"
 #include "debrisflow/flow/outlet.hpp"
+#include "debrisflow/flow/rock_feed.hpp"
 #include "debrisflow/io/case_spec.hpp"
 #include "debrisflow/io/summary.hpp"
 #include "debrisflow/io/vtk_writer.hpp"
@@ -68,6 +69,7 @@ private:
     std::vector<std::unique_ptr<flow::FluidInlet>> inlets_;
     std::vector<std::unique_ptr<flow::Outlet>> outlets_;
     std::vector<std::unique_ptr<flow::GrainFeed>> feeds_;
+    std::vector<std::unique_ptr<flow::RockFeed>> rock_feeds_;
     std::vector<std::unique_ptr<probes::Probe>> probes_;
     Log log_;
     Real t_ = 0;

@@ -1,6 +1,7 @@
 #pragma once
 #include "debrisflow/dem/grain_set.hpp"
 #include "debrisflow/flow/hydrograph.hpp"
+#include "debrisflow/flow/solid_feed.hpp"
 #include "debrisflow/io/case_spec.hpp"
 #include "debrisflow/scenario/size_sampler.hpp"
 
@@ -14,19 +15,19 @@ namespace debrisflow::flow {
 // volume owed grows by Q_s dt each step, and grains (sizes from the block's distribution) are
 // placed at random positions that overlap no grain, until the debt is smaller than the next
 // grain. When the region is full the debt carries over (the feed is choked; the CSV shows it).
-class GrainFeed {
+class GrainFeed : public SolidFeed {
 public:
     GrainFeed(const io::FeedSpec& spec, const io::CaseSpec& c);
 
     // Inserts what is owed after a step of dt ending at t.
     void apply(dem::DemSolver& dem, Real t, Real dt);
 
-    const std::string& name() const { return spec_.name; }
-    Real discharge(Real t) const { return q_.at(t); } // target [m^3/s of solid]
-    Real volume_in() const { return volume_in_; }     // solid volume released [m^3]
-    Real mass_in() const { return mass_in_; }         // [kg]
-    Real owed() const { return owed_; }               // solid volume not yet placed [m^3]
-    long grains_in() const { return count_; }
+    const std::string& name() const override { return spec_.name; }
+    Real discharge(Real t) const override { return q_.at(t); }
+    Real volume_in() const override { return volume_in_; }
+    Real mass_in() const override { return mass_in_; }
+    Real owed() const override { return owed_; }
+    long pieces_in() const override { return count_; }
     // One grain of the smallest size the feed can release (for the DEM time step).
     Real smallest_diameter() const { return spec_.size.min; }
 

@@ -73,6 +73,10 @@ struct GrainsSpec {
 // Solid feed (a hopper outlet or an insertion region): grains of `size` released at random
 // non-overlapping places in the box `min`-`max` at a solid discharge Q_s(t) [m^3/s of solid;
 // 2D: m^2/s], piecewise linear in `times` (one value: constant), with `velocity`.
+// A solid feed: grains, or rigid rocks when `rocks` lists a library of closed STL shapes (each
+// rock: a random shape, stretched along its axes with the sphericity kept within
+// +-sphericity_tolerance of the shape's, randomly oriented, scaled to a sampled
+// equivalent-sphere diameter).
 struct FeedSpec {
     std::string name, material;
     SizeSpec size;
@@ -80,6 +84,9 @@ struct FeedSpec {
     std::vector<Real> times, discharge;
     unsigned seed = 1;
     Real every = 0.01;
+    std::vector<std::string> rocks; // STL files (resolved paths); empty: a grain feed
+    Real sphericity_tolerance = Real(0.15);
+    int layers = 0; // SPH boundary layers of each rock (0: automatic)
 };
 
 struct DemSpec {
@@ -134,6 +141,7 @@ struct RigidSpec {
     Real joint_stabilization = 0.2; // Baumgarte factor of the position error fed back per step
     std::vector<BodySpec> bodies;
     std::vector<JointSpec> joints;
+    std::vector<FeedSpec> feeds; // rock feeds (bodies released during the run)
 };
 
 struct ProbeSpec {
@@ -197,7 +205,7 @@ struct CaseSpec {
     DemSpec dem;
     std::vector<WallSpec> walls;
     RigidSpec rigid;
-    bool has_bodies() const { return !rigid.bodies.empty(); }
+    bool has_bodies() const { return !rigid.bodies.empty() || !rigid.feeds.empty(); }
     std::vector<ProbeSpec> probes;
     std::vector<InletSpec> inlets;
     std::vector<OutletSpec> outlets;

@@ -1,6 +1,7 @@
 #include "debrisflow/io/dem_reader.hpp"
 #include "debrisflow/dem/contact_laws_k.hpp"
 #include <algorithm>
+#include <filesystem>
 #include <fmt/format.h>
 
 namespace debrisflow::io {
@@ -170,6 +171,25 @@ FeedSpec read_feed(const ConfigTable& t, const CaseSpec& c) {
     f.velocity = t.vec3("velocity", c.dim, {});
     f.seed = unsigned(t.integer("seed", 1));
     f.every = t.positive("every", 0.01);
+    if (t.has("rocks")) {
+        if (c.dim != 2) {
+            for (const auto& name : t.strings("rocks")) {
+                std::filesystem::path p(name);
+                if (p.is_relative()) p = std::filesystem::path(t.file()).parent_path() / p;
+                if (!std::filesystem::exists(p))
+                    t.fail("rocks", "mesh file not found: " + p.string());
+                f.rocks.push_back(p.string());
+            }
+        } else {
+            t.fail("rocks", "rock feeds (STL shapes) need dimensions = 3");
+        }
+        if (f.rocks.empty()) t.fail("rocks", "list at least one STL shape");
+        f.sphericity_tolerance = t.real("sphericity_tolerance", Real(0.15));
+        if (!(f.sphericity_tolerance >= 0 && f.sphericity_tolerance < 1))
+            t.fail("sphericity_tolerance", "must be in [0, 1) (0.15: +-15 %)");
+        f.layers = int(t.integer("layers", 0));
+        if (f.layers < 0) t.fail("layers", "must be >= 0");
+    }
     t.finish();
     return f;
 }
@@ -192,7 +212,8 @@ void read_dem(const ConfigTable& root, CaseSpec& c) {
     }
     for (const auto& t : root.tables("feed")) {
         if (c.dem.materials.empty()) t.fail("material", "define a [[material]] first");
-        c.dem.feeds.push_back(read_feed(t, c));
+        auto f = read_feed(t, c);
+        (f.rocks.empty() ? c.dem.feeds : c.rigid.feeds).push_back(std::move(f));
     }
     c.has_dem = !c.dem.grains.empty() || !c.dem.feeds.empty();
     auto& p = c.dem.params;

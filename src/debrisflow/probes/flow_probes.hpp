@@ -64,17 +64,20 @@ private:
 // growing debt means the release region is full: the feed is choked).
 class FeedProbe : public Probe {
 public:
-    FeedProbe(const flow::GrainFeed& feed, Real every) : Probe(feed.name(), every), feed_(feed) {}
+    // pieces: "grains" or "rocks" (the count column).
+    FeedProbe(const flow::SolidFeed& feed, Real every, std::string pieces)
+        : Probe(feed.name(), every), feed_(feed), pieces_(std::move(pieces)) {}
     std::vector<std::string> columns() const override {
-        return {"Qs [m3/s]", "volume_in [m3]", "mass_in [kg]", "grains_in [-]", "owed [m3]"};
+        return {"Qs [m3/s]", "volume_in [m3]", "mass_in [kg]", pieces_ + "_in [-]", "owed [m3]"};
     }
     std::vector<Real> sample(Real t, const ProbeContext&) override {
-        return {feed_.discharge(t), feed_.volume_in(), feed_.mass_in(), Real(feed_.grains_in()),
+        return {feed_.discharge(t), feed_.volume_in(), feed_.mass_in(), Real(feed_.pieces_in()),
                 feed_.owed()};
     }
 
 private:
-    const flow::GrainFeed& feed_;
+    const flow::SolidFeed& feed_;
+    std::string pieces_;
 };
 
 } // namespace debrisflow::probes

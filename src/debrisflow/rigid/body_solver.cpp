@@ -20,6 +20,7 @@ BodySolver::BodySolver(RigidParams params, std::vector<BodyState> bodies,
 void BodySolver::attach_particles(particles::ParticleSet* set, BodyParticles particles) {
     set_ = set;
     particles_ = std::move(particles);
+    initial_rows_ = particles_.owner.size();
     layout_seen_ = ~std::uint64_t(0);
     refresh_members();
 }
@@ -62,9 +63,40 @@ void BodySolver::refresh_members() {
     if (!set_ || set_->layout_version() == layout_seen_) return;
     layout_seen_ = set_->layout_version();
     members_.clear();
-    const ParticleId lo = particles_.first_id, hi = lo + particles_.owner.size();
-    for (Index i = 0; i < set_->size(); ++i)
-        if (set_->id[i] >= lo && set_->id[i] < hi) members_.push_back(i);
+    rows_.clear();
+    for (Index i = 0; i < set_->size(); ++i) {
+        const long r = particles_.row(set_->id[i], initial_rows_);
+        if (r < 0) continue;
+        members_.push_back(i);
+        rows_.push_back(std::uint32_t(r));
+    }
+}
+
+int BodySolver::add_body(BodyState state, BodyModel model, const std::vector<ShellPoint>& shell,
+                         Real rho, Real m_particle) {
+    apply_locks(state);
+    const int b = int(bodies_.size());
+    bodies_.push_back(state);
+    models_.push_back(std::move(model));
+    loads_.emplace_back();
+    if (obstacles_) {
+        grain_force_.emplace_back();
+        grain_torque_.emplace_back();
+        obstacles_->impulse.emplace_back();
+        obstacles_->angular_impulse.emplace_back();
+        update_obstacles();
+    }
+    if (set_)
+        for (const auto& sp : shell) {
+            set_->add(sp.p, state.vel + cross(state.omega(), sp.p - state.pos), rho, m_particle,
+                      particles::Kind::boundary, std::int16_t(-1));
+            set_->set_wall(set_->size() - 1, sp.n, sp.depth);
+            particles_.extra_rows.emplace(set_->id.back(), std::uint32_t(particles_.owner.size()));
+            particles_.owner.push_back(b);
+            particles_.offset.push_back(rotate_inverse(state.q, sp.p - state.pos));
+            particles_.normal.push_back(rotate_inverse(state.q, sp.n));
+        }
+    return b;
 }
 
 void BodySolver::move_particles(bool positions) {
@@ -72,14 +104,13 @@ void BodySolver::move_particles(bool positions) {
     refresh_members();
     auto pv = set_->view();
     const Index* mem = members_.data();
-    const ParticleId* ids = set_->id.data();
-    const ParticleId first = particles_.first_id;
+    const std::uint32_t* rows = rows_.data();
     const std::int32_t* owner = particles_.owner.data();
     const Vec3 *off = particles_.offset.data(), *nrm = particles_.normal.data();
     const BodyState* bs = bodies_.data();
     exec::for_each(Index(members_.size()), [=](Index k) {
         const Index i = mem[k];
-        const std::size_t r = std::size_t(ids[i] - first);
+        const std::size_t r = rows[k];
         const BodyState& b = bs[owner[r]];
         const Vec3 arm = rotate(b.q, off[r]);
         if (positions) {
@@ -115,9 +146,9 @@ void BodySolver::compute_forces() {
     for (auto& l : loads_) l = {};
     if (set_) {
         refresh_members();
-        const ParticleId first = particles_.first_id;
-        for (Index i : members_) {
-            const std::size_t r = std::size_t(set_->id[i] - first);
+        for (std::size_t k = 0; k < members_.size(); ++k) {
+            const Index i = members_[k];
+            const std::size_t r = rows_[k];
             const int b = particles_.owner[r];
             const Vec3 f = set_->mass[i] * Vec3{set_->ax[i], set_->ay[i], set_->az[i]};
             const Vec3 x{set_->x[i], set_->y[i], set_->z[i]};

@@ -6,6 +6,7 @@
 #include "debrisflow/sph/sph_solver.hpp"
 #include "debrisflow/time/phase.hpp"
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
 namespace debrisflow::rigid {
@@ -23,11 +24,25 @@ struct RigidParams {
 
 // SPH boundary particles that move with the bodies, addressed by persistent particle id:
 // particle id first_id + k belongs to body owner[k] at body-frame offset offset[k], with the
-// body-frame wall normal normal[k] (for the no-slip extrapolation).
+// body-frame wall normal normal[k] (for the no-slip extrapolation). Bodies added during the run
+// append rows whose ids are listed in extra_ids (row owner.size() - extra_ids.size() + j).
 struct BodyParticles {
     ParticleId first_id = 0;
     std::vector<std::int32_t> owner;
     std::vector<Vec3> offset, normal;
+    std::unordered_map<ParticleId, std::uint32_t> extra_rows; // id -> row, for added bodies
+    // Row of particle id, or -1 when it belongs to no body.
+    long row(ParticleId id, std::size_t initial) const {
+        if (id >= first_id && id < first_id + initial) return long(id - first_id);
+        const auto it = extra_rows.find(id);
+        return it == extra_rows.end() ? -1 : long(it->second);
+    }
+};
+
+// A surface point of a body added during the run: world position and outward unit normal.
+struct ShellPoint {
+    Vec3 p, n;
+    Real depth;
 };
 
 // Six-degree-of-freedom rigid bodies as a phase of the time loop. Newton-Euler with the
@@ -57,6 +72,11 @@ public:
     time::DtLimit stable_dt() const override;
     void check_health(Real t) const override;
     void add_timings(time::Timings& t) const override;
+
+    // Adds a body during the run (a rock feed); with a fluid attached, its shell points become
+    // SPH boundary particles of density rho and mass m_particle. Returns the body's index.
+    int add_body(BodyState state, BodyModel model, const std::vector<ShellPoint>& shell, Real rho,
+                 Real m_particle);
 
     // A velocity-Verlet step on the bodies alone (tests, body-only runs).
     void step(Real dt);
@@ -98,7 +118,9 @@ private:
     const dem::WallSet* walls_;
     particles::ParticleSet* set_ = nullptr;
     BodyParticles particles_;
-    std::vector<Index> members_;
+    std::size_t initial_rows_ = 0;    // rows of the bodies built before the run
+    std::vector<Index> members_;      // particle index of each body particle
+    std::vector<std::uint32_t> rows_; // its row in particles_
     dem::ObstacleSet* obstacles_ = nullptr;
     std::vector<Vec3> grain_force_, grain_torque_; // last collected grain reaction
     std::uint64_t layout_seen_ = ~std::uint64_t(0);

@@ -210,11 +210,12 @@ UnitProps unit_props(const ShapeField& f, int dim) {
 } // namespace
 
 BuiltBody build_body(const io::BodySpec& b, const io::CaseSpec& c, Real density, Real sph_dp,
-                     int layers) {
+                     int layers, const TriangleMesh* given) {
     const int dim = c.dim;
     auto mesh = std::make_shared<TriangleMesh>();
     if (b.shape.type == "stl")
-        *mesh = TriangleMesh::read_stl(b.shape.file, b.shape.scale, b.shape.offset);
+        *mesh =
+            given ? *given : TriangleMesh::read_stl(b.shape.file, b.shape.scale, b.shape.offset);
     const ShapeField field{b, dim, mesh.get()};
     const UnitProps u = unit_props(field, dim);
     BuiltBody out;

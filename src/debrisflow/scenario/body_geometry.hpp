@@ -2,6 +2,7 @@
 #include "debrisflow/io/case_spec.hpp"
 #include "debrisflow/rigid/body_model.hpp"
 #include "debrisflow/rigid/body_state.hpp"
+#include "debrisflow/scenario/stl_mesh.hpp"
 #include <functional>
 
 namespace debrisflow::scenario {
@@ -25,8 +26,9 @@ struct BuiltBody {
 // inertia come from the geometry and density (box, sphere, cylinder exactly; STL by signed
 // tetrahedra, Tonon 2004; clumps by lattice integration of the union), then the prescribed
 // mass (inertia scaled), centre-of-mass offset (parallel-axis theorem) or full inertia tensor
-// replace them. In 2D the body is 1 m thick along y and turns about y only.
+// replace them. In 2D the body is 1 m thick along y and turns about y only. An "stl" body takes
+// `mesh` (world coordinates at t = 0) when given instead of reading spec.shape.file.
 BuiltBody build_body(const io::BodySpec& spec, const io::CaseSpec& c, Real density, Real sph_dp,
-                     int layers);
+                     int layers, const TriangleMesh* mesh = nullptr);
 
 } // namespace debrisflow::scenario
