@@ -2,6 +2,7 @@
 // Reading digitised reference curves (CSV or whitespace, '#' comments) and comparing curves.
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -39,6 +40,25 @@ inline double interpolate(const Curve& c, double x) {
             return x1 > x0 ? y0 + (y1 - y0) * (x - x0) / (x1 - x0) : y1;
         }
     return c.back().second;
+}
+
+// "quantity,value" files (analytic/*_example.csv): value by quantity; non-numeric rows skipped.
+inline std::map<std::string, double> read_key_values(const std::string& path) {
+    std::ifstream f(path);
+    if (!f) throw std::runtime_error("missing reference file " + path);
+    std::map<std::string, double> out;
+    std::string line;
+    while (std::getline(f, line)) {
+        const auto comma = line.rfind(',');
+        if (comma == std::string::npos) continue;
+        try {
+            std::size_t used = 0;
+            const double v = std::stod(line.substr(comma + 1), &used);
+            out[line.substr(0, comma)] = v;
+        } catch (const std::exception&) {
+        }
+    }
+    return out;
 }
 
 } // namespace debrisflow::test

@@ -59,6 +59,20 @@ int check(const std::string& file, const std::vector<std::string>& sets) {
         }
         if (spec.rigid.dt > 0 && spec.rigid.dt < dt) dt = spec.rigid.dt, limiter = "rigid dt";
     }
+    if (sim.has_fem()) {
+        const auto& f = sim.fem();
+        for (const auto& s : f.solids()) {
+            Real mass = 0;
+            for (std::int32_t n = 0; n < s.nodes; ++n)
+                mass += f.masses()[std::size_t(s.first_node + n)];
+            std::cout << fmt::format("solid '{}': {} {} elements, {} nodes, mass {:.6g} kg\n",
+                                     s.name, s.volume.size(), fem::name_of(s.type), s.nodes, mass);
+        }
+        const bool alone = !sim.has_fluid() && !sim.has_grains() && !sim.has_bodies();
+        std::cout << fmt::format("fem: critical step {:.4g} s{}\n", f.critical_dt(),
+                                 alone ? "" : " (sub-cycled inside the global step)");
+        if (alone && f.critical_dt() < dt) dt = f.critical_dt(), limiter = "fem element CFL";
+    }
     for (const auto& w : spec.walls)
         if (!w.structure.empty())
             std::cout << fmt::format(

@@ -4,9 +4,11 @@
 #include "debrisflow/io/vtk_writer.hpp"
 #include "debrisflow/probes/flow_probes.hpp"
 #include "debrisflow/scenario/build_bodies.hpp"
+#include "debrisflow/scenario/build_fem.hpp"
 #include "debrisflow/scenario/build_grains.hpp"
 #include "debrisflow/scenario/build_particles.hpp"
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
@@ -17,8 +19,21 @@ Simulation::Simulation(io::CaseSpec spec) : spec_(std::move(spec)) {
     std::vector<scenario::BuiltBody> bodies;
     if (spec_.has_bodies()) bodies = scenario::build_body_geometry(spec_);
     ParticleId first_body_particle = 0;
+    if (spec_.has_fem()) fem_ = scenario::make_fem_solver(spec_);
     if (!spec_.fluids.empty()) {
         first_body_particle = scenario::build_particles(spec_, set_, bodies);
+        if (fem_) {
+            const int layers = spec_.fem.layers > 0
+                                   ? spec_.fem.layers
+                                   : int(std::ceil(2 * spec_.sph.h / spec_.dp - 1e-9));
+            sph_fem_ = std::make_unique<coupling::SphFemCoupling>(*fem_, set_, spec_.dp, layers,
+                                                                  spec_.sph.rho0, spec_.dim);
+            fem_->add_load_source([this](std::vector<Vec3>& f) {
+                sph_fem_->collect_forces(f);
+                fem_->report_interface_force("fluid", sph_fem_->last_force());
+            });
+            fem_->add_surface_mover([this](Real ahead) { sph_fem_->move_particles(ahead); });
+        }
         solver_ = std::make_unique<sph::SphSolver>(spec_.sph, set_, spec_.domain);
     }
     if (spec_.has_dem || spec_.has_bodies()) scenario::build_dem_walls(spec_, dem_walls_);
@@ -143,7 +158,7 @@ io::RunReport Simulation::run(const RunOptions& opt) {
     if (rigid_ && !solver_ && !dem_) report.initial_dt = {spec_.rigid.dt, "rigid dt"};
     const bool files = !opt.out_dir.empty();
     log_.set_quiet(opt.quiet);
-    std::unique_ptr<io::VtkSeries> vtk, vtk_grains, vtk_bodies;
+    std::unique_ptr<io::VtkSeries> vtk, vtk_grains, vtk_bodies, vtk_fem;
     if (files) {
         std::filesystem::create_directories(opt.out_dir);
         log_.open(opt.out_dir + "/log.txt");
@@ -154,6 +169,24 @@ io::RunReport Simulation::run(const RunOptions& opt) {
             vtk_grains = std::make_unique<io::VtkSeries>(opt.out_dir + "/vtk", "grains");
         if (spec_.vtk && rigid_)
             vtk_bodies = std::make_unique<io::VtkSeries>(opt.out_dir + "/vtk", "bodies");
+        if (spec_.vtk && fem_)
+            vtk_fem = std::make_unique<io::VtkSeries>(opt.out_dir + "/vtk", "fem");
+    }
+    if (fem_) {
+        long elements = 0;
+        for (const auto& s : fem_->solids()) elements += long(s.volume.size());
+        report.fem_nodes = long(fem_->nodes());
+        report.fem_elements = elements;
+        report.fem_dt = fem_->critical_dt();
+        if (!solver_ && !dem_ && !rigid_)
+            report.initial_dt = {fem_->critical_dt(), "fem element CFL"};
+        for (const auto& s : fem_->solids())
+            log_.line(fmt::format("solid '{}': {} {} elements, {} nodes", s.name, s.volume.size(),
+                                  fem::name_of(s.type), s.nodes));
+        log_.line(
+            fmt::format("fem: critical step {:.4g} s (element eigenvalue bound, cfl {}){}",
+                        fem_->critical_dt(), spec_.fem.params.cfl,
+                        solver_ || dem_ || rigid_ ? ", sub-cycled inside the global step" : ""));
     }
     log_.line(fmt::format("debrisflow: case '{}' ({}), {}D, end time {} s", spec_.name, spec_.file,
                           spec_.dim, spec_.t_end));
@@ -202,6 +235,7 @@ io::RunReport Simulation::run(const RunOptions& opt) {
     if (solver_) integ.add_phase(solver_.get());
     if (dem_) integ.add_phase(dem_.get());
     if (rigid_) integ.add_phase(rigid_.get()); // after SPH: it sums the fluid forces
+    if (fem_) integ.add_phase(fem_.get());
     integ.set_reorder_every(solver_ ? spec_.sph.reorder_every : 1);
     // Cases without fluid take one force evaluation per step (velocity Verlet in the DEM and
     // the rigid bodies).
@@ -249,10 +283,14 @@ io::RunReport Simulation::run(const RunOptions& opt) {
         integ.add_observer(frames, [this, &vtk_bodies](const time::StepInfo& s) {
             write_bodies(*vtk_bodies, s.t);
         });
+    if (vtk_fem)
+        integ.add_observer(
+            frames, [this, &vtk_fem](const time::StepInfo& s) { vtk_fem->write(*fem_, s.t); });
     // Particle-steps counted step by step: inlets, feeds and outlets change the count.
     double particle_steps = 0;
     integ.add_observer(time::Schedule::every_steps(1), [&](const time::StepInfo& s) {
-        if (s.step > 0) particle_steps += double(set_.size() + grains_.size());
+        if (s.step > 0)
+            particle_steps += double(set_.size() + grains_.size() + (fem_ ? fem_->nodes() : 0));
     });
     const auto wall0 = std::chrono::steady_clock::now();
     auto last_report = wall0;
@@ -281,6 +319,10 @@ io::RunReport Simulation::run(const RunOptions& opt) {
             report.pairs = solver_->pair_list().pairs();
         }
         if (rigid_) report.body_contacts = rigid_->contacts();
+        if (fem_) {
+            report.fem_eroded = fem_->eroded_elements();
+            report.fem_substeps = fem_->substeps();
+        }
         if (dem_) {
             report.dem_contacts = dem_->contacts();
             report.dem_list_builds = dem_->list_builds();

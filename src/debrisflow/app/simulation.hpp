@@ -1,6 +1,8 @@
 #pragma once
 #include "debrisflow/core/log.hpp"
+#include "debrisflow/coupling/sph_fem.hpp"
 #include "debrisflow/dem/dem_solver.hpp"
+#include "debrisflow/fem/fem_solver.hpp"
 #include "debrisflow/flow/fluid_inlet.hpp"
 #include "debrisflow/flow/grain_feed.hpp"
 #include "debrisflow/flow/outlet.hpp"
@@ -43,6 +45,8 @@ public:
     dem::DemSolver& grains() { return *dem_; }
     bool has_bodies() const { return rigid_ != nullptr; }
     rigid::BodySolver& bodies() { return *rigid_; }
+    bool has_fem() const { return fem_ != nullptr; }
+    fem::FemSolver& fem() { return *fem_; }
     const std::vector<std::unique_ptr<probes::Probe>>& probes() const { return probes_; }
     probes::Probe& probe(const std::string& name);
     // Memory held by particle data and neighbour lists, in bytes (estimate).
@@ -52,7 +56,9 @@ private:
     // Runs the DEM alone, gates closed, until PFC's equilibrium ratio (mean unbalanced force /
     // mean contact force) drops below dem.settle_ratio; then zeroes grain velocities.
     void settle_grains();
-    probes::ProbeContext probe_context() { return {solver_.get(), dem_.get(), rigid_.get()}; }
+    probes::ProbeContext probe_context() {
+        return {solver_.get(), dem_.get(), rigid_.get(), fem_.get()};
+    }
     // World positions, velocities, radii and body index of the bodies' contact samples (or
     // vertices) for the VTK output.
     void write_bodies(io::VtkSeries& vtk, Real t) const;
@@ -64,7 +70,9 @@ private:
     dem::WallSet dem_walls_;
     std::unique_ptr<dem::DemSolver> dem_;
     std::unique_ptr<rigid::BodySolver> rigid_;
-    dem::ObstacleSet obstacles_; // grain-body contact link
+    std::unique_ptr<fem::FemSolver> fem_;
+    std::unique_ptr<coupling::SphFemCoupling> sph_fem_; // with a fluid
+    dem::ObstacleSet obstacles_;                        // grain-body contact link
     bool settled_ = false;
     std::vector<std::unique_ptr<flow::FluidInlet>> inlets_;
     std::vector<std::unique_ptr<flow::Outlet>> outlets_;

@@ -2,6 +2,7 @@
 #include "debrisflow/io/case_spec.hpp"
 #include "debrisflow/io/config_table.hpp"
 #include "debrisflow/io/dem_reader.hpp"
+#include "debrisflow/io/fem_reader.hpp"
 #include "debrisflow/io/flow_reader.hpp"
 #include "debrisflow/io/rigid_reader.hpp"
 #include "debrisflow/io/structure_reader.hpp"
@@ -154,10 +155,10 @@ sph::Domain read_domain(const ConfigTable& t, int dim) {
 ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
     ProbeSpec p;
     p.name = t.string("name");
-    p.type =
-        t.choice("type", {"pressure", "gauge", "velocity", "front", "wall_force", "section",
-                          "kinetic_energy", "runup", "mass_flux", "body", "discharge", "trapping",
-                          "deposit", "flow_section", "fluid_runup", "pressure_map"});
+    p.type = t.choice("type", {"pressure", "gauge", "velocity", "front", "wall_force", "section",
+                               "kinetic_energy", "runup", "mass_flux", "body", "discharge",
+                               "trapping", "deposit", "flow_section", "fluid_runup", "pressure_map",
+                               "fem_displacement", "fem_force"});
     p.every = t.positive("every", 0.001);
     const bool fluid_probe = p.type == "pressure" || p.type == "velocity" || p.type == "gauge" ||
                              p.type == "front" || p.type == "flow_section" ||
@@ -166,7 +167,22 @@ ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
     const bool grain_probe = p.type == "section" || p.type == "kinetic_energy" ||
                              p.type == "runup" || p.type == "mass_flux";
     if (grain_probe && !c.has_dem) t.fail("type", "a " + p.type + " probe needs [[grains]]");
-    if (p.type == "body") {
+    if (p.type == "fem_force") {
+        if (!c.has_fem()) t.fail("type", "a fem_force probe needs a [[solid]]");
+    } else if (p.type == "fem_displacement") {
+        if (!c.has_fem()) t.fail("type", "a fem_displacement probe needs a [[solid]]");
+        if (t.has("set")) {
+            p.set = t.string("set");
+            const auto dot = p.set.find('.');
+            const std::string solid = p.set.substr(0, dot);
+            if (std::none_of(c.fem.solids.begin(), c.fem.solids.end(),
+                             [&](const auto& s) { return s.name == solid; }))
+                t.fail("set", "no [[solid]] named \"" + solid +
+                                  "\" (a set is \"<solid>.<set>\" or \"<solid>\")");
+        } else {
+            p.position = t.vec3("position", c.dim);
+        }
+    } else if (p.type == "body") {
         p.body = t.string("body");
         if (std::none_of(c.rigid.bodies.begin(), c.rigid.bodies.end(),
                          [&](const auto& b) { return b.name == p.body; }))
@@ -340,8 +356,9 @@ CaseSpec read_case(const std::string& path, const std::vector<std::string>& over
     read_dem(root, c);
     c.dem.params.gravity = gravity;
     read_rigid(root, c);
-    if (c.fluids.empty() && !c.has_dem && !c.has_bodies())
-        root.fail("fluid", "a case needs [[fluid]], [[grains]] or [[body]] blocks");
+    read_fem(root, c, gravity);
+    if (c.fluids.empty() && !c.has_dem && !c.has_bodies() && !c.has_fem())
+        root.fail("fluid", "a case needs [[fluid]], [[grains]], [[body]] or [[solid]] blocks");
 
     const Real support = 2 * c.sph.h;
     for (const auto& t : root.tables("wall")) {

@@ -1,6 +1,9 @@
 #pragma once
 #include "debrisflow/dem/dem_params.hpp"
 #include "debrisflow/dem/materials.hpp"
+#include "debrisflow/fem/fem_material.hpp"
+#include "debrisflow/fem/fem_mesh.hpp"
+#include "debrisflow/fem/fem_params.hpp"
 #include "debrisflow/sph/sph_params.hpp"
 #include "debrisflow/sph/sph_solver.hpp"
 #include <array>
@@ -149,6 +152,7 @@ struct ProbeSpec {
     std::string type; // pressure, gauge, velocity, front, wall_force, section,
                       // kinetic_energy, runup, mass_flux, body
     std::string body; // body: the body tracked
+    std::string set;  // fem_displacement: node set "<solid>.<set>" (empty: nearest node)
     Vec3 position;
     std::string wall;
     int axis = 0;
@@ -185,6 +189,39 @@ struct OutletSpec {
     Real every = 0.01;
 };
 
+// A deformable solid (explicit FEM): a built-in mesh ("box": min, max, divisions; "trapezoid":
+// a dam section extruded across the channel) or a Gmsh file, of one element type, with node
+// sets fixed in all directions.
+struct FemSolidSpec {
+    std::string name, material, mesh = "box", element = "hex8", file;
+    Vec3 min, max;
+    std::array<int, 3> divisions{4, 4, 4};
+    fem::TrapezoidSpec trapezoid;
+    std::vector<std::string> fixed;
+};
+
+// A named node set: the nodes of `solid` inside the box min-max.
+struct FemNodeSetSpec {
+    std::string name, solid;
+    Vec3 min, max;
+};
+
+// A force [N] (2D: N/m) shared by the nodes of a set, scaled by a table of time.
+struct FemLoadSpec {
+    std::string set;
+    Vec3 force;
+    std::vector<Real> times, scale;
+};
+
+struct FemSpec {
+    fem::FemParams params;
+    int layers = 0; // SPH boundary layers inside the solids' surface (0: ceil(2h/dp))
+    std::vector<fem::FemMaterial> materials;
+    std::vector<FemSolidSpec> solids;
+    std::vector<FemNodeSetSpec> node_sets;
+    std::vector<FemLoadSpec> loads;
+};
+
 struct CaseSpec {
     std::string file;
     std::string name;
@@ -206,6 +243,8 @@ struct CaseSpec {
     std::vector<WallSpec> walls;
     RigidSpec rigid;
     bool has_bodies() const { return !rigid.bodies.empty() || !rigid.feeds.empty(); }
+    FemSpec fem;
+    bool has_fem() const { return !fem.solids.empty(); }
     std::vector<ProbeSpec> probes;
     std::vector<InletSpec> inlets;
     std::vector<OutletSpec> outlets;

@@ -60,6 +60,14 @@ void write_summary(const std::string& path, const CaseSpec& spec, const RunRepor
     if (r.bodies > 0)
         o << fmt::format("  \"rigid\": {{\"bodies\": {}, \"contacts\": {}}},\n", r.bodies,
                          r.body_contacts);
+    if (r.fem_elements > 0)
+        o << fmt::format(
+            "  \"fem\": {{\"nodes\": {}, \"elements\": {}, \"eroded\": {}, \"dt\": {}, "
+            "\"steps\": {}, \"element_steps_per_second\": {}}},\n",
+            r.fem_nodes, r.fem_elements, r.fem_eroded, num(r.fem_dt), r.fem_substeps,
+            num(res.wall_seconds > 0
+                    ? double(r.fem_elements) * double(r.fem_substeps) / res.wall_seconds
+                    : 0));
     const auto& t = res.timings;
     o << fmt::format("  \"timings\": {{\"neighbors\": {}, \"forces\": {}, \"integration\": {}, "
                      "\"output\": {}}},\n",

@@ -1,5 +1,6 @@
 #include "debrisflow/io/vtk_writer.hpp"
 #include "debrisflow/core/error.hpp"
+#include "debrisflow/fem/fem_solver.hpp"
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -131,7 +132,65 @@ void VtkSeries::write_frame(std::size_t n, Block points, const std::vector<Block
     cells.push_back(make_block("connectivity", "Int32", 1, conn));
     cells.push_back(make_block("offsets", "Int32", 1, offs));
     cells.push_back(make_block("types", "UInt8", 1, cell_types));
+    write_grid(n, n, std::move(points), point_data, cells, {}, scalars, t);
+}
 
+void VtkSeries::write(const fem::FemSolver& fem, Real t) {
+    const std::size_t n = fem.nodes();
+    std::vector<float> pos(3 * n), disp(3 * n), vel(3 * n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec3 u = fem.displacement(i);
+        for (int d = 0; d < 3; ++d) {
+            pos[3 * i + std::size_t(d)] = float(fem.positions()[i][d]);
+            disp[3 * i + std::size_t(d)] = float(u[d]);
+            vel[3 * i + std::size_t(d)] = float(fem.velocities()[i][d]);
+        }
+    }
+    std::vector<std::int32_t> conn, offs;
+    std::vector<std::uint8_t> types, eroded;
+    std::vector<float> stress, strain, mises, principal, damage;
+    std::vector<std::int32_t> solid;
+    for (std::size_t s = 0; s < fem.solids().size(); ++s) {
+        const auto& so = fem.solids()[s];
+        const int nn = fem::nodes_of(so.type);
+        for (std::size_t e = 0; e < so.volume.size(); ++e) {
+            for (int a = 0; a < nn; ++a)
+                conn.push_back(so.conn[e * std::size_t(nn) + std::size_t(a)]);
+            offs.push_back(std::int32_t(conn.size()));
+            types.push_back(std::uint8_t(fem::vtk_cell_type(so.type)));
+            const auto r = fem.element_result(s, e);
+            for (int k = 0; k < 6; ++k) {
+                stress.push_back(float(r.stress[std::size_t(k)]));
+                strain.push_back(float(r.strain[std::size_t(k)]));
+            }
+            mises.push_back(float(r.von_mises));
+            principal.push_back(float(r.max_principal_strain));
+            damage.push_back(float(r.damage));
+            eroded.push_back(r.eroded ? 1 : 0);
+            solid.push_back(std::int32_t(s));
+        }
+    }
+    std::vector<Block> point_data, cells, cell_data;
+    point_data.push_back(make_block("displacement", "Float32", 3, disp));
+    point_data.push_back(make_block("velocity", "Float32", 3, vel));
+    cells.push_back(make_block("connectivity", "Int32", 1, conn));
+    cells.push_back(make_block("offsets", "Int32", 1, offs));
+    cells.push_back(make_block("types", "UInt8", 1, types));
+    cell_data.push_back(make_block("stress", "Float32", 6, stress));   // [Pa]
+    cell_data.push_back(make_block("strain", "Float32", 6, strain));   // tensor [-]
+    cell_data.push_back(make_block("von_mises", "Float32", 1, mises)); // [Pa]
+    cell_data.push_back(make_block("max_principal_strain", "Float32", 1, principal));
+    cell_data.push_back(make_block("damage", "Float32", 1, damage));
+    cell_data.push_back(make_block("eroded", "UInt8", 1, eroded));
+    cell_data.push_back(make_block("solid", "Int32", 1, solid));
+    write_grid(n, types.size(), make_block("points", "Float32", 3, pos), point_data, cells,
+               cell_data, "displacement", t);
+}
+
+void VtkSeries::write_grid(std::size_t n, std::size_t cells_count, Block points,
+                           const std::vector<Block>& point_data, const std::vector<Block>& cells,
+                           const std::vector<Block>& cell_data, const std::string& scalars,
+                           Real t) {
     const std::string file = fmt::format("{}_{:05d}.vtu", base_, entries_.size());
     std::ofstream out(dir_ + "/" + file, std::ios::binary);
     if (!out) throw InputError("cannot write " + dir_ + "/" + file);
@@ -148,10 +207,16 @@ void VtkSeries::write_frame(std::size_t n, Block points, const std::vector<Block
     out << fmt::format("<FieldData><DataArray type=\"Float64\" Name=\"TimeValue\" "
                        "NumberOfTuples=\"1\" format=\"ascii\">{:.9g}</DataArray></FieldData>\n",
                        t);
-    out << fmt::format("<Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", n, n);
+    out << fmt::format("<Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", n, cells_count);
     out << "<PointData Scalars=\"" << scalars << "\" Vectors=\"velocity\">\n";
     for (const auto& b : point_data) out << header(b);
-    out << "</PointData>\n<Points>\n" << header(points) << "</Points>\n<Cells>\n";
+    out << "</PointData>\n";
+    if (!cell_data.empty()) {
+        out << "<CellData>\n";
+        for (const auto& b : cell_data) out << header(b);
+        out << "</CellData>\n";
+    }
+    out << "<Points>\n" << header(points) << "</Points>\n<Cells>\n";
     for (const auto& b : cells) out << header(b);
     out << "</Cells>\n</Piece>\n</UnstructuredGrid>\n<AppendedData encoding=\"raw\">\n_";
     auto raw = [&](const Block& b) {
@@ -160,6 +225,7 @@ void VtkSeries::write_frame(std::size_t n, Block points, const std::vector<Block
         out.write(b.bytes.data(), std::streamsize(b.bytes.size()));
     };
     for (const auto& b : point_data) raw(b);
+    for (const auto& b : cell_data) raw(b);
     raw(points);
     for (const auto& b : cells) raw(b);
     out << "\n</AppendedData>\n</VTKFile>\n";

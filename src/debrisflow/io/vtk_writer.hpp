@@ -4,6 +4,10 @@
 #include <string>
 #include <vector>
 
+namespace debrisflow::fem {
+class FemSolver;
+}
+
 namespace debrisflow::io {
 
 // Writes particle frames as VTK XML UnstructuredGrid (.vtu, raw appended binary) and keeps a
@@ -21,6 +25,10 @@ public:
     // Points with named scalar fields (e.g. panel centres of a pressure map).
     void write(const std::vector<Vec3>& x,
                const std::vector<std::pair<std::string, std::vector<float>>>& scalars, Real t);
+    // Solid meshes (all FEM solids): current node positions; point data displacement and
+    // velocity; cell data stress and strain (xx, yy, zz, xy, yz, zx), von_mises,
+    // max_principal_strain, damage, eroded and solid index.
+    void write(const fem::FemSolver& fem, Real t);
     int frames() const { return int(entries_.size()); }
 
     struct Block {
@@ -32,6 +40,10 @@ public:
 private:
     void write_frame(std::size_t n, Block points, const std::vector<Block>& point_data,
                      const std::string& scalars, Real t);
+    // Any unstructured grid: cells = connectivity, offsets, types blocks.
+    void write_grid(std::size_t n, std::size_t cells_count, Block points,
+                    const std::vector<Block>& point_data, const std::vector<Block>& cells,
+                    const std::vector<Block>& cell_data, const std::string& scalars, Real t);
     void write_pvd() const;
     std::string dir_, base_;
     std::vector<std::pair<Real, std::string>> entries_;

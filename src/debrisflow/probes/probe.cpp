@@ -2,6 +2,7 @@
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/probes/body_probe.hpp"
 #include "debrisflow/probes/dem_probes.hpp"
+#include "debrisflow/probes/fem_probes.hpp"
 #include "debrisflow/probes/flow_instruments.hpp"
 #include "debrisflow/probes/sph_probes.hpp"
 #include "debrisflow/probes/wall_force_probe.hpp"
@@ -65,6 +66,8 @@ std::unique_ptr<Probe> make_probe(const io::ProbeSpec& s, const io::CaseSpec& c)
     if (s.type == "kinetic_energy") return std::make_unique<KineticEnergyProbe>(s);
     if (s.type == "mass_flux") return std::make_unique<MassFluxProbe>(s, c);
     if (s.type == "body") return std::make_unique<BodyProbe>(s, c);
+    if (s.type == "fem_displacement") return std::make_unique<FemDisplacementProbe>(s, c);
+    if (s.type == "fem_force") return std::make_unique<FemForceProbe>(s, c);
     if (s.type == "discharge") return std::make_unique<DischargeProbe>(s, c);
     if (s.type == "trapping") return std::make_unique<TrappingProbe>(s, c);
     if (s.type == "deposit") return std::make_unique<DepositProbe>(s, c);

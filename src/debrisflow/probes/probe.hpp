@@ -12,14 +12,19 @@ class DemSolver;
 namespace debrisflow::rigid {
 class BodySolver;
 }
+namespace debrisflow::fem {
+class FemSolver;
+}
 
 namespace debrisflow::probes {
 
-// What a probe may look at: the fluid, the grains, the rigid bodies (null when absent).
+// What a probe may look at: the fluid, the grains, the rigid bodies, the FEM solids (null when
+// absent).
 struct ProbeContext {
     const sph::SphSolver* sph = nullptr;
     dem::DemSolver* dem = nullptr;
     const rigid::BodySolver* rigid = nullptr;
+    const fem::FemSolver* fem = nullptr;
 };
 
 // A measurement taken on a schedule and written to probes/<name>.csv (first column time [s]).

@@ -1,0 +1,172 @@
+#include "debrisflow/coupling/sph_fem.hpp"
+#include "debrisflow/core/error.hpp"
+#include "debrisflow/exec/parallel.hpp"
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+
+namespace debrisflow::coupling {
+
+namespace {
+
+struct Box {
+    Vec3 lo, hi;
+    bool holds(Vec3 p, Real pad) const {
+        for (int k = 0; k < 3; ++k)
+            if (p[k] < lo[k] - pad || p[k] > hi[k] + pad) return false;
+        return true;
+    }
+};
+
+} // namespace
+
+SphFemCoupling::SphFemCoupling(fem::FemSolver& fem, particles::ParticleSet& set, Real dp,
+                               int layers, Real rho, int dim)
+    : fem_(fem), set_(set), dim_(dim) {
+    facets_ = fem::boundary_facets(fem);
+    const auto& X = fem.reference();
+    // Element bounding boxes (reference configuration).
+    std::vector<std::vector<Box>> boxes(fem.solids().size());
+    for (std::size_t s = 0; s < fem.solids().size(); ++s) {
+        const auto& so = fem.solids()[s];
+        const int nn = fem::nodes_of(so.type);
+        for (std::size_t e = 0; e < so.volume.size(); ++e) {
+            Box b{X[std::size_t(so.conn[e * std::size_t(nn)])],
+                  X[std::size_t(so.conn[e * std::size_t(nn)])]};
+            for (int a = 1; a < nn; ++a) {
+                const Vec3 p = X[std::size_t(so.conn[e * std::size_t(nn) + std::size_t(a)])];
+                for (int k = 0; k < 3; ++k)
+                    b.lo[k] = std::min(b.lo[k], p[k]), b.hi[k] = std::max(b.hi[k], p[k]);
+            }
+            boxes[s].push_back(b);
+        }
+    }
+    auto find = [&](Vec3 p, std::size_t& s_out, std::size_t& e_out, std::array<Real, 3>& xi) {
+        for (std::size_t s = 0; s < boxes.size(); ++s)
+            for (std::size_t e = 0; e < boxes[s].size(); ++e)
+                if (boxes[s][e].holds(p, 1e-9) && fem::locate(fem, s, e, p, xi)) {
+                    s_out = s, e_out = e;
+                    return true;
+                }
+        return false;
+    };
+    // Fluid inside a solid is removed.
+    std::vector<std::uint8_t> keep(std::size_t(set.size()), 1);
+    long removed = 0;
+    for (Index i = 0; i < set.size(); ++i) {
+        if (set.kind[i] != std::uint8_t(particles::Kind::fluid)) continue;
+        std::size_t s, e;
+        std::array<Real, 3> xi;
+        if (find({set.x[i], set.y[i], set.z[i]}, s, e, xi)) keep[std::size_t(i)] = 0, ++removed;
+    }
+    if (removed > 0) set.compact(keep);
+    // Shell samples on each solid's lattice.
+    const Real thickness = layers * dp;
+    const Real mass = rho * std::pow(dp, Real(dim));
+    for (std::size_t s = 0; s < fem.solids().size(); ++s) {
+        const auto& so = fem.solids()[s];
+        Vec3 lo = X[std::size_t(so.first_node)], hi = lo;
+        for (std::int32_t n = 0; n < so.nodes; ++n)
+            for (int k = 0; k < 3; ++k) {
+                lo[k] = std::min(lo[k], X[std::size_t(so.first_node + n)][k]);
+                hi[k] = std::max(hi[k], X[std::size_t(so.first_node + n)][k]);
+            }
+        const int nx = int(std::floor((hi.x - lo.x) / dp + 1e-9));
+        const int ny = dim == 2 ? 0 : int(std::floor((hi.y - lo.y) / dp + 1e-9));
+        const int nz = int(std::floor((hi.z - lo.z) / dp + 1e-9));
+        for (int k = 0; k <= nz; ++k)
+            for (int j = 0; j <= ny; ++j)
+                for (int i = 0; i <= nx; ++i) {
+                    // Half-spacing offset: samples lie strictly inside, dp/2 under the surface.
+                    const Vec3 p{lo.x + (i + Real(0.5)) * dp,
+                                 dim == 2 ? 0 : lo.y + (j + Real(0.5)) * dp,
+                                 lo.z + (k + Real(0.5)) * dp};
+                    std::size_t hs, he;
+                    std::array<Real, 3> xi;
+                    if (!find(p, hs, he, xi) || hs != s) continue;
+                    Real depth = std::numeric_limits<Real>::max();
+                    std::int32_t nearest = -1;
+                    for (std::size_t f = 0; f < facets_.size(); ++f) {
+                        const Real d = fem::facet_distance(facets_[f], X, p);
+                        if (d < depth) depth = d, nearest = std::int32_t(f);
+                    }
+                    if (nearest < 0 || depth >= thickness) continue;
+                    Row r{std::int32_t(s), std::int32_t(he), {}, nearest};
+                    const auto n = fem::shape_values(so.type, xi);
+                    for (std::size_t a = 0; a < n.size(); ++a) r.n[a] = n[a];
+                    set.add(p, {}, rho, mass, particles::Kind::boundary, std::int16_t(-1));
+                    set.set_wall(set.size() - 1,
+                                 fem::facet_normal(facets_[std::size_t(nearest)], X), depth);
+                    row_of_id_.emplace(set.id.back(), std::uint32_t(rows_.size()));
+                    rows_.push_back(r);
+                }
+        if (rows_.empty())
+            throw InputError(fmt::format("solid '{}' is thinner than the fluid's dp = {} m: no "
+                                         "boundary particles",
+                                         so.name, dp));
+    }
+    refresh_members();
+}
+
+void SphFemCoupling::refresh_members() {
+    if (set_.layout_version() == layout_seen_) return;
+    layout_seen_ = set_.layout_version();
+    members_.clear();
+    member_rows_.clear();
+    for (Index i = 0; i < set_.size(); ++i) {
+        const auto it = row_of_id_.find(set_.id[i]);
+        if (it == row_of_id_.end()) continue;
+        members_.push_back(i);
+        member_rows_.push_back(it->second);
+    }
+}
+
+void SphFemCoupling::move_particles(Real ahead) {
+    refresh_members();
+    const auto& x = fem_.positions();
+    const auto& v = fem_.velocities();
+    const auto& solids = fem_.solids();
+    auto pv = set_.view();
+    const Index* mem = members_.data();
+    const std::uint32_t* rows = member_rows_.data();
+    const Row* rw = rows_.data();
+    const fem::SurfaceFacet* facets = facets_.data();
+    const int dim = dim_;
+    exec::for_each(Index(members_.size()), [&, pv, mem, rows, rw, facets, dim](Index k) {
+        const Row& r = rw[rows[k]];
+        const auto& so = solids[std::size_t(r.solid)];
+        const int nn = fem::nodes_of(so.type);
+        const std::int32_t* c = &so.conn[std::size_t(r.element) * std::size_t(nn)];
+        Vec3 p{}, u{};
+        for (int a = 0; a < nn; ++a) {
+            const Vec3 xa = x[std::size_t(c[a])], va = v[std::size_t(c[a])];
+            p = p + r.n[std::size_t(a)] * (xa + ahead * va);
+            u = u + r.n[std::size_t(a)] * va;
+        }
+        if (dim == 2) p.y = 0, u.y = 0;
+        const Index i = mem[k];
+        pv.x[i] = p.x, pv.y[i] = p.y, pv.z[i] = p.z;
+        pv.vx[i] = u.x, pv.vy[i] = u.y, pv.vz[i] = u.z;
+        const Vec3 n = fem::facet_normal(facets[r.facet], x);
+        pv.wnx[i] = n.x, pv.wny[i] = n.y, pv.wnz[i] = n.z;
+    });
+}
+
+void SphFemCoupling::collect_forces(std::vector<Vec3>& f) {
+    refresh_members();
+    Vec3 total{};
+    for (std::size_t k = 0; k < members_.size(); ++k) {
+        const Index i = members_[k];
+        const Row& r = rows_[member_rows_[k]];
+        const Vec3 fk = set_.mass[i] * Vec3{set_.ax[i], set_.ay[i], set_.az[i]};
+        total = total + fk;
+        const auto& so = fem_.solids()[std::size_t(r.solid)];
+        const int nn = fem::nodes_of(so.type);
+        const std::int32_t* c = &so.conn[std::size_t(r.element) * std::size_t(nn)];
+        for (int a = 0; a < nn; ++a)
+            f[std::size_t(c[a])] = f[std::size_t(c[a])] + r.n[std::size_t(a)] * fk;
+    }
+    last_force_ = total;
+}
+
+} // namespace debrisflow::coupling

@@ -1,0 +1,52 @@
+#pragma once
+#include "debrisflow/fem/fem_solver.hpp"
+#include "debrisflow/fem/fem_surface.hpp"
+#include "debrisflow/particles/particle_set.hpp"
+#include <unordered_map>
+#include <vector>
+
+namespace debrisflow::coupling {
+
+// Two-way SPH <-> FEM coupling through boundary particles that move with the elements
+// (as DualSPHysics couples Chrono/FEA bodies: DBC particles carried by the structure). Each
+// particle sits at fixed natural coordinates xi of its element: x = sum N_a(xi) x_a,
+// v = sum N_a(xi) v_a; the fluid force on it, m_k a_k (the SPH pair forces are antisymmetric,
+// so this is exactly the reaction of the fluid), returns to the element's nodes with the same
+// weights, F_a += N_a(xi) m_k a_k: sum_a N_a = 1 conserves momentum across the interface and
+// the virtual work of the load is consistent with the shape functions.
+class SphFemCoupling {
+public:
+    // Samples every solid on the fluid's lattice spacing dp: points inside the solid within
+    // `layers` x dp of its surface become boundary particles of density rho (mass rho dp^dim);
+    // fluid particles inside a solid are removed. Call before the SPH solver is built.
+    SphFemCoupling(fem::FemSolver& fem, particles::ParticleSet& set, Real dp, int layers, Real rho,
+                   int dim);
+
+    // Places the particles from the nodes, `ahead` seconds extrapolated along the node velocity.
+    void move_particles(Real ahead);
+    // Adds the fluid forces on the particles to the nodes [N].
+    void collect_forces(std::vector<Vec3>& f);
+    Vec3 last_force() const { return last_force_; } // total fluid force on the solids [N]
+    std::size_t particles() const { return rows_.size(); }
+
+private:
+    struct Row {
+        std::int32_t solid, element;
+        std::array<Real, 10> n; // shape-function values at xi
+        std::int32_t facet;     // nearest boundary facet (wall normal)
+    };
+    void refresh_members();
+
+    fem::FemSolver& fem_;
+    particles::ParticleSet& set_;
+    int dim_;
+    std::vector<Row> rows_;
+    std::vector<fem::SurfaceFacet> facets_;
+    std::unordered_map<ParticleId, std::uint32_t> row_of_id_;
+    std::vector<Index> members_;
+    std::vector<std::uint32_t> member_rows_;
+    std::uint64_t layout_seen_ = ~std::uint64_t(0);
+    Vec3 last_force_;
+};
+
+} // namespace debrisflow::coupling

@@ -1,0 +1,499 @@
+#include "debrisflow/fem/fem_solver.hpp"
+#include "debrisflow/core/error.hpp"
+#include "debrisflow/core/stopwatch.hpp"
+#include "debrisflow/exec/parallel.hpp"
+#include "debrisflow/fem/element_matrices.hpp"
+#include <Eigen/Dense>
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+
+namespace debrisflow::fem {
+
+namespace {
+
+using VecN = Eigen::Matrix<Real, Eigen::Dynamic, 1, 0, 30, 1>;
+using Vec6 = Eigen::Matrix<Real, Eigen::Dynamic, 1, 0, 6, 1>;
+
+// World component of local component k (2D solids live in the x-z plane).
+inline int world_axis(int dim, int k) {
+    return dim == 3 ? k : 2 * k;
+}
+
+// Rotation of the polar decomposition F = R U (dim x dim, in the leading block of a 3x3).
+Eigen::Matrix3d polar_rotation(const Eigen::Matrix3d& F, int dim) {
+    Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
+    if (dim == 2) {
+        const Real th = std::atan2(F(1, 0) - F(0, 1), F(0, 0) + F(1, 1));
+        R(0, 0) = R(1, 1) = std::cos(th);
+        R(1, 0) = std::sin(th);
+        R(0, 1) = -R(1, 0);
+        return R;
+    }
+    Eigen::JacobiSVD<Eigen::Matrix3d> svd(F, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    Eigen::Matrix3d U = svd.matrixU();
+    const Eigen::Matrix3d V = svd.matrixV();
+    if ((U * V.transpose()).determinant() < 0) U.col(2) *= -1;
+    return U * V.transpose();
+}
+
+// Principal values of a Voigt strain (engineering shears) in dim dimensions (plane strain:
+// the third is 0).
+Eigen::Vector3d principal_strains(const Vec6& e, int dim) {
+    if (dim == 2) {
+        const Real c = (e[0] + e[1]) / 2, r = std::hypot((e[0] - e[1]) / 2, e[2] / 2);
+        return {c + r, 0, c - r};
+    }
+    Eigen::Matrix3d t;
+    t << e[0], e[3] / 2, e[5] / 2, e[3] / 2, e[1], e[4] / 2, e[5] / 2, e[4] / 2, e[2];
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(t, Eigen::EigenvaluesOnly);
+    return eig.eigenvalues().reverse();
+}
+
+Real interpolate(const std::vector<Real>& t, const std::vector<Real>& v, Real at) {
+    if (t.empty()) return 1;
+    if (at <= t.front()) return v.front();
+    for (std::size_t k = 1; k < t.size(); ++k)
+        if (at <= t[k]) return v[k - 1] + (v[k] - v[k - 1]) * (at - t[k - 1]) / (t[k] - t[k - 1]);
+    return v.back();
+}
+
+} // namespace
+
+FemSolver::FemSolver(FemParams params, std::vector<FemMaterial> materials)
+    : params_(params), materials_(std::move(materials)) {}
+
+int FemSolver::add_solid(const std::string& name, const FemMesh& mesh, int material) {
+    if (dim_of(mesh.type) != params_.dim)
+        throw InputError(fmt::format("solid '{}': {} elements in a {}D case", name,
+                                     name_of(mesh.type), params_.dim));
+    const FemMaterial& mat = materials_.at(std::size_t(material));
+    const Eigen::MatrixXd C = elasticity_matrix(mat.youngs_modulus, mat.poisson, params_.dim);
+    Solid s;
+    s.name = name;
+    s.type = mesh.type;
+    s.material = material;
+    s.first_node = std::int32_t(X_.size());
+    s.nodes = std::int32_t(mesh.nodes.size());
+    for (const Vec3& p : mesh.nodes) {
+        X_.push_back(p);
+        x_.push_back(p);
+        mass_.push_back(0);
+    }
+    const int nn = nodes_of(mesh.type), dim = params_.dim, ndof = nn * dim;
+    const std::size_t ne = mesh.elements();
+    std::vector<Vec3> xe(static_cast<std::size_t>(nn));
+    Real omega = 0;
+    for (std::size_t e = 0; e < ne; ++e) {
+        for (int a = 0; a < nn; ++a) {
+            const std::int32_t n = mesh.conn[e * std::size_t(nn) + std::size_t(a)];
+            xe[std::size_t(a)] = mesh.nodes[std::size_t(n)];
+            s.conn.push_back(s.first_node + n);
+        }
+        ElementMatrices m;
+        try {
+            m = element_matrices(mesh.type, xe, C, mat.density);
+        } catch (const InputError& err) {
+            throw InputError(fmt::format("solid '{}', element {}: {}", name, e, err.what()));
+        }
+        s.stiffness.insert(s.stiffness.end(), m.stiffness.data(), m.stiffness.data() + ndof * ndof);
+        s.strain_op.insert(s.strain_op.end(), m.strain.data(), m.strain.data() + m.strain.size());
+        s.gradient.insert(s.gradient.end(), m.gradient.data(),
+                          m.gradient.data() + m.gradient.size());
+        s.volume.push_back(m.volume);
+        for (int a = 0; a < nn; ++a)
+            mass_[std::size_t(s.conn[e * std::size_t(nn) + std::size_t(a)])] += m.mass[a];
+        omega = std::max(omega, m.omega_max);
+    }
+    s.kappa.assign(ne, mat.damage_threshold);
+    s.damage.assign(ne, 0);
+    s.eroded.assign(ne, 0);
+    s.force.assign(ne * std::size_t(ndof), 0);
+    for (const auto& [set, nodes] : mesh.node_sets) {
+        std::vector<std::int32_t> global;
+        for (auto n : nodes) global.push_back(s.first_node + n);
+        sets_.push_back({name + "." + set, std::move(global)});
+    }
+    std::vector<std::int32_t> all(std::size_t(s.nodes));
+    for (std::int32_t n = 0; n < s.nodes; ++n) all[std::size_t(n)] = s.first_node + n;
+    sets_.push_back({name, std::move(all)});
+    solids_.push_back(std::move(s));
+    const Real xi = params_.beta * omega / 2;
+    const Real dt = params_.cfl * 2 / omega * (std::sqrt(1 + xi * xi) - xi);
+    critical_dt_ = critical_dt_ > 0 ? std::min(critical_dt_, dt) : dt;
+    initialized_ = false;
+    return int(solids_.size()) - 1;
+}
+
+void FemSolver::fix(const std::vector<std::int32_t>& nodes, std::array<bool, 3> dofs) {
+    fixed_.resize(X_.size(), 0);
+    for (auto n : nodes)
+        for (int k = 0; k < 3; ++k)
+            if (dofs[std::size_t(k)]) fixed_[std::size_t(n)] |= std::uint8_t(1u << k);
+}
+
+void FemSolver::add_load(FemLoad load) {
+    loads_.push_back(std::move(load));
+}
+
+bool FemSolver::has_node_set(const std::string& name) const {
+    for (const auto& s : sets_)
+        if (s.first == name) return true;
+    return false;
+}
+
+const std::vector<std::int32_t>& FemSolver::node_set(const std::string& name) const {
+    for (const auto& s : sets_)
+        if (s.first == name) return s.second;
+    std::string known;
+    for (const auto& s : sets_) known += (known.empty() ? "" : ", ") + s.first;
+    throw InputError(fmt::format("no FEM node set '{}' (known: {})", name, known));
+}
+
+void FemSolver::initialize() {
+    const std::size_t n = X_.size();
+    fixed_.resize(n, 0);
+    v_.resize(n);
+    a_.assign(n, {});
+    f_int_.assign(n, {});
+    f_ext_.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+        if (!(mass_[i] > 0)) throw InputError(fmt::format("FEM node {} carries no mass", i));
+    // Node -> element incidences.
+    std::vector<std::int32_t> count(n + 1, 0);
+    for (const auto& s : solids_)
+        for (auto c : s.conn) ++count[std::size_t(c) + 1];
+    for (std::size_t i = 0; i < n; ++i) count[i + 1] += count[i];
+    inc_start_ = count;
+    inc_.assign(std::size_t(count[n]), {});
+    std::vector<std::int32_t> fill(count.begin(), count.end() - 1);
+    for (std::size_t si = 0; si < solids_.size(); ++si) {
+        const auto& s = solids_[si];
+        const int nn = nodes_of(s.type);
+        for (std::size_t k = 0; k < s.conn.size(); ++k)
+            inc_[std::size_t(fill[std::size_t(s.conn[k])]++)] = {std::int32_t(si),
+                                                                 std::int32_t(k / std::size_t(nn)),
+                                                                 std::int32_t(k % std::size_t(nn))};
+    }
+    internal_forces(false);
+    accelerations();
+    initialized_ = true;
+}
+
+void FemSolver::internal_forces(bool update_damage) {
+    ScopedTimer timer(t_forces_);
+    const int dim = params_.dim;
+    const Real beta = params_.beta;
+    for (auto& s : solids_) {
+        const int nn = nodes_of(s.type), ndof = nn * dim, ns = dim == 3 ? 6 : 3;
+        const FemMaterial& mat = materials_[std::size_t(s.material)];
+        const Vec3 *X = X_.data(), *x = x_.data(), *v = v_.data();
+        Solid* sp = &s;
+        exec::for_each(Index(s.volume.size()), [=, &mat](Index e) {
+            Solid& so = *sp;
+            Real* out = &so.force[std::size_t(e) * std::size_t(ndof)];
+            if (so.eroded[std::size_t(e)]) {
+                for (int k = 0; k < ndof; ++k) out[k] = 0;
+                return;
+            }
+            const std::int32_t* c = &so.conn[std::size_t(e) * std::size_t(nn)];
+            const Real* g = &so.gradient[std::size_t(e) * std::size_t(nn * dim)];
+            Vec3 xc{}, Xc{};
+            for (int a = 0; a < nn; ++a) {
+                xc = xc + x[c[a]];
+                Xc = Xc + X[c[a]];
+            }
+            xc = (Real(1) / nn) * xc;
+            Xc = (Real(1) / nn) * Xc;
+            Eigen::Matrix3d F = Eigen::Matrix3d::Zero();
+            for (int a = 0; a < nn; ++a) {
+                const Vec3 d = x[c[a]] - xc;
+                for (int i = 0; i < dim; ++i)
+                    for (int j = 0; j < dim; ++j)
+                        F(i, j) += d[world_axis(dim, i)] * g[a + j * nn]; // g is nn x dim
+            }
+            const Eigen::Matrix3d R = polar_rotation(F, dim);
+            VecN u(ndof), w(ndof);
+            for (int a = 0; a < nn; ++a) {
+                const Vec3 d = x[c[a]] - xc, D = X[c[a]] - Xc, va = v[c[a]];
+                for (int i = 0; i < dim; ++i) {
+                    Real rd = 0, rv = 0;
+                    for (int j = 0; j < dim; ++j) {
+                        rd += R(j, i) * d[world_axis(dim, j)];
+                        rv += R(j, i) * va[world_axis(dim, j)];
+                    }
+                    u[a * dim + i] = rd - D[world_axis(dim, i)];
+                    w[a * dim + i] = rv;
+                }
+            }
+            const Eigen::Map<const Eigen::MatrixXd> K(
+                &so.stiffness[std::size_t(e) * std::size_t(ndof * ndof)], ndof, ndof);
+            if (update_damage && (mat.damages() || mat.erosion_strain > 0)) {
+                const Eigen::Map<const Eigen::MatrixXd> S(
+                    &so.strain_op[std::size_t(e) * std::size_t(ns * ndof)], ns, ndof);
+                const Vec6 eps = S * u;
+                const Eigen::Vector3d pr = principal_strains(eps, dim);
+                if (mat.damages()) {
+                    const Real p[3] = {pr[0], pr[1], pr[2]};
+                    Real& kappa = so.kappa[std::size_t(e)];
+                    kappa = std::max(kappa, mazars_equivalent_strain(p));
+                    so.damage[std::size_t(e)] = mazars_damage(mat, kappa);
+                }
+                if (mat.erosion_strain > 0 && pr[0] > mat.erosion_strain) {
+                    so.eroded[std::size_t(e)] = 1;
+                    for (int k = 0; k < ndof; ++k) out[k] = 0;
+                    return;
+                }
+            }
+            VecN f = K * u;
+            if (beta > 0) f += beta * (K * w);
+            const Real scale = 1 - so.damage[std::size_t(e)];
+            for (int a = 0; a < nn; ++a)
+                for (int i = 0; i < dim; ++i) {
+                    Real r = 0;
+                    for (int j = 0; j < dim; ++j) r += R(i, j) * f[a * dim + j];
+                    out[a * dim + i] = -scale * r;
+                }
+        });
+    }
+    const std::int32_t* start = inc_start_.data();
+    const auto* inc = inc_.data();
+    const Solid* solids = solids_.data();
+    Vec3* fi = f_int_.data();
+    exec::for_each(Index(X_.size()), [=](Index n) {
+        Vec3 f{};
+        for (std::int32_t k = start[n]; k < start[n + 1]; ++k) {
+            const auto& [si, e, a] = inc[k];
+            const Solid& s = solids[si];
+            const int ndof = nodes_of(s.type) * dim;
+            const Real* fe = &s.force[std::size_t(e) * std::size_t(ndof) + std::size_t(a * dim)];
+            for (int i = 0; i < dim; ++i) f[world_axis(dim, i)] += fe[i];
+        }
+        fi[n] = f;
+    });
+}
+
+void FemSolver::accelerations() {
+    const std::size_t n = X_.size();
+    std::vector<Vec3> load(n);
+    for (const auto& l : loads_) {
+        const Real s = interpolate(l.times, l.scale, t_) / Real(l.nodes.size());
+        for (auto i : l.nodes) load[std::size_t(i)] = load[std::size_t(i)] + s * l.force;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        Vec3 a = (1 / mass_[i]) * (f_int_[i] + f_ext_[i] + load[i]) + params_.gravity -
+                 params_.alpha * v_[i];
+        if (params_.dim == 2) a.y = 0;
+        for (int k = 0; k < 3; ++k)
+            if (fixed_[i] & (1u << k)) a[k] = 0;
+        a_[i] = a;
+    }
+}
+
+void FemSolver::step(Real h) {
+    const std::size_t n = X_.size();
+    {
+        ScopedTimer timer(t_integrate_);
+        for (std::size_t i = 0; i < n; ++i) {
+            v_[i] = v_[i] + (h / 2) * a_[i];
+            for (int k = 0; k < 3; ++k)
+                if (fixed_[i] & (1u << k)) v_[i][k] = 0;
+            x_[i] = x_[i] + h * v_[i];
+        }
+    }
+    t_ += h;
+    internal_forces(true);
+    accelerations();
+    for (std::size_t i = 0; i < n; ++i) v_[i] = v_[i] + (h / 2) * a_[i];
+    ++substeps_;
+}
+
+void FemSolver::add_load_source(std::function<void(std::vector<Vec3>&)> source) {
+    sources_.push_back(std::move(source));
+}
+
+void FemSolver::add_surface_mover(std::function<void(Real)> mover) {
+    movers_.push_back(std::move(mover));
+}
+
+void FemSolver::compute_forces() {
+    if (sources_.empty()) return;
+    if (!initialized_) initialize();
+    std::fill(f_ext_.begin(), f_ext_.end(), Vec3{});
+    for (auto& s : sources_) s(f_ext_);
+}
+
+void FemSolver::predictor(Real dt) {
+    for (auto& m : movers_) m(dt / 2);
+}
+
+void FemSolver::corrector(Real dt) {
+    advance(dt);
+    for (auto& m : movers_) m(0);
+}
+
+void FemSolver::verlet_step(Real dt, bool) {
+    advance(dt);
+    for (auto& m : movers_) m(0);
+}
+
+void FemSolver::advance(Real dt) {
+    if (!initialized_) initialize();
+    accelerations(); // external loads may have changed since the last step
+    const long n = std::max(1L, long(std::ceil(dt / critical_dt_ - 1e-9)));
+    const Real h = dt / Real(n);
+    for (long k = 0; k < n; ++k) step(h);
+}
+
+time::DtLimit FemSolver::stable_dt() const {
+    if (params_.max_subcycles > 0) return {critical_dt_ * params_.max_subcycles, "fem element CFL"};
+    return {std::numeric_limits<Real>::max(), "fem (sub-cycled)"};
+}
+
+void FemSolver::check_health(Real t) const {
+    for (std::size_t i = 0; i < x_.size(); ++i) {
+        const Vec3 p = x_[i];
+        bool finite = std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+        bool inside = true;
+        for (int k = 0; k < 3; ++k)
+            if (!(params_.dim == 2 && k == 1))
+                inside = inside && p[k] >= params_.domain_min[k] && p[k] <= params_.domain_max[k];
+        if (!finite || !inside)
+            throw InstabilityError(fmt::format(
+                "FEM node {} {} at t = {:.6g} s: position ({:.4g}, {:.4g}, {:.4g}) m, velocity "
+                "({:.4g}, {:.4g}, {:.4g}) m/s (FEM step {:.3g} s)",
+                i, finite ? "left the domain" : "is not finite", t, p.x, p.y, p.z, v_[i].x, v_[i].y,
+                v_[i].z, critical_dt_));
+    }
+}
+
+void FemSolver::add_timings(time::Timings& t) const {
+    t.forces += t_forces_;
+    t.integration += t_integrate_;
+}
+
+ElementResult FemSolver::element_result(std::size_t si, std::size_t e) const {
+    const Solid& s = solids_[si];
+    const int dim = params_.dim, nn = nodes_of(s.type), ndof = nn * dim, ns = dim == 3 ? 6 : 3;
+    const FemMaterial& mat = materials_[std::size_t(s.material)];
+    ElementResult r;
+    r.damage = s.damage[e];
+    r.eroded = s.eroded[e] != 0;
+    const std::int32_t* c = &s.conn[e * std::size_t(nn)];
+    const Real* g = &s.gradient[e * std::size_t(nn * dim)];
+    Vec3 xc{}, Xc{};
+    for (int a = 0; a < nn; ++a) {
+        xc = xc + x_[std::size_t(c[a])];
+        Xc = Xc + X_[std::size_t(c[a])];
+    }
+    xc = (Real(1) / nn) * xc;
+    Xc = (Real(1) / nn) * Xc;
+    Eigen::Matrix3d F = Eigen::Matrix3d::Zero();
+    for (int a = 0; a < nn; ++a) {
+        const Vec3 d = x_[std::size_t(c[a])] - xc;
+        for (int i = 0; i < dim; ++i)
+            for (int j = 0; j < dim; ++j) F(i, j) += d[world_axis(dim, i)] * g[a + j * nn];
+    }
+    const Eigen::Matrix3d R = polar_rotation(F, dim);
+    VecN u(ndof);
+    for (int a = 0; a < nn; ++a) {
+        const Vec3 d = x_[std::size_t(c[a])] - xc, D = X_[std::size_t(c[a])] - Xc;
+        for (int i = 0; i < dim; ++i) {
+            Real rd = 0;
+            for (int j = 0; j < dim; ++j) rd += R(j, i) * d[world_axis(dim, j)];
+            u[a * dim + i] = rd - D[world_axis(dim, i)];
+        }
+    }
+    const Eigen::Map<const Eigen::MatrixXd> S(&s.strain_op[e * std::size_t(ns * ndof)], ns, ndof);
+    const Vec6 eps = S * u;
+    const Eigen::MatrixXd C = elasticity_matrix(mat.youngs_modulus, mat.poisson, dim);
+    const Vec6 sig = (1 - r.damage) * (C * eps);
+    // Local tensors (3x3, world axes x, y, z) rotated back: T = R t R^T.
+    Eigen::Matrix3d te = Eigen::Matrix3d::Zero(), ts = Eigen::Matrix3d::Zero();
+    if (dim == 3) {
+        te << eps[0], eps[3] / 2, eps[5] / 2, eps[3] / 2, eps[1], eps[4] / 2, eps[5] / 2,
+            eps[4] / 2, eps[2];
+        ts << sig[0], sig[3], sig[5], sig[3], sig[1], sig[4], sig[5], sig[4], sig[2];
+        te = R * te * R.transpose();
+        ts = R * ts * R.transpose();
+    } else { // local (x, z) block; y is the plane-strain direction
+        Eigen::Matrix2d e2, s2, R2 = R.topLeftCorner<2, 2>();
+        e2 << eps[0], eps[2] / 2, eps[2] / 2, eps[1];
+        s2 << sig[0], sig[2], sig[2], sig[1];
+        e2 = R2 * e2 * R2.transpose();
+        s2 = R2 * s2 * R2.transpose();
+        te(0, 0) = e2(0, 0), te(2, 2) = e2(1, 1), te(0, 2) = te(2, 0) = e2(0, 1);
+        ts(0, 0) = s2(0, 0), ts(2, 2) = s2(1, 1), ts(0, 2) = ts(2, 0) = s2(0, 1);
+        ts(1, 1) = mat.poisson * (sig[0] + sig[1]); // plane strain
+    }
+    r.strain = {te(0, 0), te(1, 1), te(2, 2), te(0, 1), te(1, 2), te(0, 2)};
+    r.stress = {ts(0, 0), ts(1, 1), ts(2, 2), ts(0, 1), ts(1, 2), ts(0, 2)};
+    const Real sxx = ts(0, 0), syy = ts(1, 1), szz = ts(2, 2);
+    r.von_mises = std::sqrt(Real(0.5) * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) +
+                                         (szz - sxx) * (szz - sxx)) +
+                            3 * (ts(0, 1) * ts(0, 1) + ts(1, 2) * ts(1, 2) + ts(0, 2) * ts(0, 2)));
+    r.max_principal_strain = principal_strains(eps, dim)[0];
+    return r;
+}
+
+Eigen::MatrixXd FemSolver::assemble_stiffness() const {
+    const int dim = params_.dim;
+    const Eigen::Index n = Eigen::Index(X_.size()) * dim;
+    Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
+    for (const auto& s : solids_) {
+        const int nn = nodes_of(s.type), ndof = nn * dim;
+        for (std::size_t e = 0; e < s.volume.size(); ++e) {
+            if (s.eroded[e]) continue;
+            const Eigen::Map<const Eigen::MatrixXd> ke(&s.stiffness[e * std::size_t(ndof * ndof)],
+                                                       ndof, ndof);
+            const std::int32_t* c = &s.conn[e * std::size_t(nn)];
+            for (int a = 0; a < nn; ++a)
+                for (int b = 0; b < nn; ++b)
+                    K.block(c[a] * dim, c[b] * dim, dim, dim) +=
+                        (1 - s.damage[e]) * ke.block(a * dim, b * dim, dim, dim);
+        }
+    }
+    return K;
+}
+
+Eigen::VectorXd FemSolver::dof_masses() const {
+    const int dim = params_.dim;
+    Eigen::VectorXd m(Eigen::Index(X_.size()) * dim);
+    for (std::size_t i = 0; i < X_.size(); ++i)
+        for (int k = 0; k < dim; ++k) m[Eigen::Index(i) * dim + k] = mass_[i];
+    return m;
+}
+
+long FemSolver::eroded_elements() const {
+    long n = 0;
+    for (const auto& s : solids_)
+        for (auto e : s.eroded) n += e;
+    return n;
+}
+
+Real FemSolver::kinetic_energy() const {
+    Real k = 0;
+    for (std::size_t i = 0; i < v_.size(); ++i) k += Real(0.5) * mass_[i] * dot(v_[i], v_[i]);
+    return k;
+}
+
+Real FemSolver::strain_energy() const {
+    // W = 1/2 sum_e (1 - D) u_e^T K_e u_e = -1/2 sum of element forces . nodal displacements
+    // (small rotations).
+    Real w = 0;
+    const int dim = params_.dim;
+    for (const auto& s : solids_) {
+        const int nn = nodes_of(s.type), ndof = nn * dim;
+        for (std::size_t e = 0; e < s.volume.size(); ++e)
+            for (int a = 0; a < nn; ++a) {
+                const std::size_t n = std::size_t(s.conn[e * std::size_t(nn) + std::size_t(a)]);
+                const Vec3 u = x_[n] - X_[n];
+                for (int i = 0; i < dim; ++i)
+                    w -= Real(0.5) * s.force[e * std::size_t(ndof) + std::size_t(a * dim + i)] *
+                         u[world_axis(dim, i)];
+            }
+    }
+    return w;
+}
+
+} // namespace debrisflow::fem

@@ -1,0 +1,33 @@
+#pragma once
+#include "debrisflow/probes/probe.hpp"
+
+namespace debrisflow::probes {
+
+// probes/<name>.csv: displacement of a deformable solid at a node set (mean over its nodes,
+// e.g. "dam.crest") or at the node nearest to `position` [m].
+class FemDisplacementProbe : public Probe {
+public:
+    FemDisplacementProbe(const io::ProbeSpec& s, const io::CaseSpec& c);
+    std::vector<std::string> columns() const override;
+    std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
+
+private:
+    std::string set_;
+    Vec3 position_;
+    int dim_;
+    std::vector<std::int32_t> nodes_; // resolved at the first sample
+};
+
+// probes/<name>.csv: total interface load on the solids by source (fluid; grains once coupled)
+// [N] (2D: N/m).
+class FemForceProbe : public Probe {
+public:
+    FemForceProbe(const io::ProbeSpec& s, const io::CaseSpec& c);
+    std::vector<std::string> columns() const override;
+    std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
+
+private:
+    std::string unit_;
+};
+
+} // namespace debrisflow::probes
