@@ -4,6 +4,7 @@
 #include "debrisflow/fem/element_matrices.hpp"
 #include "debrisflow/fem/fem_mesh.hpp"
 #include "debrisflow/fem/fem_solver.hpp"
+#include "debrisflow/fem/fem_surface.hpp"
 #include <fmt/format.h>
 #include <fstream>
 #include <gtest/gtest.h>
@@ -271,4 +272,53 @@ $EndElements
         EXPECT_NE(std::string(e.what()).find("no hex8 elements"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("two_tets.msh"), std::string::npos) << e.what();
     }
+}
+
+// Mazars (1986) tension damage and erosion on one hex8 under uniaxial strain (nu = 0, so the
+// principal strains are (e, 0, 0) and the equivalent strain is e): the damage follows
+// D = 1 - k0 (1 - A) / e - A exp(-B (e - k0)), never heals when unloaded, and the element is
+// eroded (no force, off the surface) once its largest principal strain passes the threshold.
+TEST(FemMaterials, MazarsDamageAndErosion) {
+    FemMaterial concrete;
+    concrete.name = "concrete";
+    concrete.model = "mazars";
+    concrete.density = 2320;
+    concrete.youngs_modulus = 32.5e9;
+    concrete.poisson = 0;
+    concrete.damage_threshold = 1e-4;
+    concrete.damage_a = 0.9;
+    concrete.damage_b = 8000;
+    concrete.erosion_strain = 0.05;
+    FemParams p;
+    p.gravity = {};
+    FemSolver fem(p, {concrete});
+    fem.add_solid("cube", box_mesh(ElementType::hex8, {0, 0, 0}, {1, 1, 1}, {1, 1, 1}), 0);
+    fem.initialize();
+    const auto X = fem.reference();
+    auto stretch = [&](Real e) {
+        for (std::size_t i = 0; i < X.size(); ++i)
+            fem.positions()[i] = X[i] + Vec3{e * X[i].x, 0, 0};
+        fem.advance(0);
+    };
+    auto expected = [&](Real e) {
+        return 1 - 1e-4 * (1 - 0.9) / e - 0.9 * std::exp(-8000 * (e - 1e-4));
+    };
+    stretch(5e-5);
+    EXPECT_EQ(fem.element_result(0, 0).damage, 0); // below kappa_0
+    for (Real e : {2e-4, 5e-4, 1e-3}) {
+        stretch(e);
+        EXPECT_NEAR(fem.element_result(0, 0).damage, expected(e), 1e-9) << e;
+        // Stress is (1 - D) E e.
+        EXPECT_NEAR(fem.element_result(0, 0).stress[0] / ((1 - expected(e)) * 32.5e9 * e), 1, 1e-6);
+    }
+    stretch(1e-4); // unloading keeps the damage of the largest strain reached
+    EXPECT_NEAR(fem.element_result(0, 0).damage, expected(1e-3), 1e-9);
+    EXPECT_EQ(boundary_facets(fem).size(), 12u);
+    stretch(0.06);
+    EXPECT_TRUE(fem.element_result(0, 0).eroded);
+    EXPECT_EQ(fem.eroded_elements(), 1);
+    EXPECT_TRUE(boundary_facets(fem).empty());
+    Real f = 0;
+    for (Real v : fem.solids()[0].force) f += std::fabs(v);
+    EXPECT_EQ(f, 0);
 }
