@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
+#include <map>
 
 namespace debrisflow::fem {
 
@@ -28,6 +29,18 @@ Eigen::Matrix3d polar_rotation(const Eigen::Matrix3d& F, int dim) {
         R(0, 0) = R(1, 1) = std::cos(th);
         R(1, 0) = std::sin(th);
         R(0, 1) = -R(1, 0);
+        return R;
+    }
+    // Newton's polar iteration R <- (R + R^-T) / 2 from F (Higham 1986): quadratic convergence,
+    // a few 3x3 inverses; the SVD only for inverted elements.
+    if (F.determinant() > 0) {
+        Eigen::Matrix3d R = F;
+        for (int it = 0; it < 30; ++it) {
+            const Eigen::Matrix3d next = Real(0.5) * (R + R.inverse().transpose());
+            const Real change = (next - R).cwiseAbs().maxCoeff();
+            R = next;
+            if (change < Real(1e-14)) break;
+        }
         return R;
     }
     Eigen::JacobiSVD<Eigen::Matrix3d> svd(F, Eigen::ComputeFullU | Eigen::ComputeFullV);
@@ -84,26 +97,51 @@ int FemSolver::add_solid(const std::string& name, const FemMesh& mesh, int mater
     const std::size_t ne = mesh.elements();
     std::vector<Vec3> xe(static_cast<std::size_t>(nn));
     Real omega = 0;
+    // Elements whose node offsets from their first node agree (to 1e-9 of the element size)
+    // share one set of matrices: a structured mesh stores a handful.
+    std::map<std::vector<long long>, std::int32_t> shapes;
+    std::vector<Eigen::VectorXd> shape_mass;
+    std::vector<Real> shape_volume;
     for (std::size_t e = 0; e < ne; ++e) {
         for (int a = 0; a < nn; ++a) {
             const std::int32_t n = mesh.conn[e * std::size_t(nn) + std::size_t(a)];
             xe[std::size_t(a)] = mesh.nodes[std::size_t(n)];
             s.conn.push_back(s.first_node + n);
         }
-        ElementMatrices m;
-        try {
-            m = element_matrices(mesh.type, xe, C, mat.density);
-        } catch (const InputError& err) {
-            throw InputError(fmt::format("solid '{}', element {}: {}", name, e, err.what()));
+        Real size = 0;
+        for (int a = 1; a < nn; ++a) size = std::max(size, norm(xe[std::size_t(a)] - xe[0]));
+        std::vector<long long> key;
+        for (int a = 1; a < nn; ++a)
+            for (int k = 0; k < 3; ++k)
+                key.push_back(std::llround((xe[std::size_t(a)][k] - xe[0][k]) / (1e-9 * size)));
+        key.push_back(std::llround(std::log2(size) * 1e6));
+        const auto found = shapes.find(key);
+        if (found != shapes.end()) {
+            s.shape.push_back(found->second);
+        } else {
+            ElementMatrices m;
+            try {
+                m = element_matrices(mesh.type, xe, C, mat.density);
+            } catch (const InputError& err) {
+                throw InputError(fmt::format("solid '{}', element {}: {}", name, e, err.what()));
+            }
+            const std::int32_t id = std::int32_t(shapes.size());
+            shapes.emplace(key, id);
+            s.shape.push_back(id);
+            shape_mass.push_back(m.mass);
+            shape_volume.push_back(m.volume);
+            omega = std::max(omega, m.omega_max);
+            s.stiffness.insert(s.stiffness.end(), m.stiffness.data(),
+                               m.stiffness.data() + ndof * ndof);
+            s.strain_op.insert(s.strain_op.end(), m.strain.data(),
+                               m.strain.data() + m.strain.size());
+            s.gradient.insert(s.gradient.end(), m.gradient.data(),
+                              m.gradient.data() + m.gradient.size());
         }
-        s.stiffness.insert(s.stiffness.end(), m.stiffness.data(), m.stiffness.data() + ndof * ndof);
-        s.strain_op.insert(s.strain_op.end(), m.strain.data(), m.strain.data() + m.strain.size());
-        s.gradient.insert(s.gradient.end(), m.gradient.data(),
-                          m.gradient.data() + m.gradient.size());
-        s.volume.push_back(m.volume);
+        const std::size_t k = std::size_t(s.shape.back());
+        s.volume.push_back(shape_volume[k]);
         for (int a = 0; a < nn; ++a)
-            mass_[std::size_t(s.conn[e * std::size_t(nn) + std::size_t(a)])] += m.mass[a];
-        omega = std::max(omega, m.omega_max);
+            mass_[std::size_t(s.conn[e * std::size_t(nn) + std::size_t(a)])] += shape_mass[k][a];
     }
     s.kappa.assign(ne, mat.damage_threshold);
     s.damage.assign(ne, 0);
@@ -180,81 +218,115 @@ void FemSolver::initialize() {
     initialized_ = true;
 }
 
+namespace {
+
+// Corotational force of element e of a solid with NN nodes in DIM dimensions (fixed sizes so
+// that K_e u is an unrolled small product): f = -(1 - D) R K_e (R^T (x - x_c) - (X - X_c)),
+// plus the stiffness-proportional damping beta K_e R^T v; updates damage and erosion.
+template <int NN, int DIM>
+void element_force(FemSolver::Solid& so, const FemMaterial& mat, const Vec3* X, const Vec3* x,
+                   const Vec3* v, Real beta, bool update_damage, Index e) {
+    constexpr int ndof = NN * DIM, ns = DIM == 3 ? 6 : 3;
+    using VecD = Eigen::Matrix<Real, ndof, 1>;
+    Real* out = &so.force[std::size_t(e) * std::size_t(ndof)];
+    if (so.eroded[std::size_t(e)]) {
+        for (int k = 0; k < ndof; ++k) out[k] = 0;
+        return;
+    }
+    const std::int32_t* c = &so.conn[std::size_t(e) * std::size_t(NN)];
+    const std::size_t k = std::size_t(so.shape[std::size_t(e)]);
+    const Real* g = &so.gradient[k * std::size_t(NN * DIM)];
+    Vec3 xc{}, Xc{};
+    for (int a = 0; a < NN; ++a) {
+        xc = xc + x[c[a]];
+        Xc = Xc + X[c[a]];
+    }
+    xc = (Real(1) / NN) * xc;
+    Xc = (Real(1) / NN) * Xc;
+    Eigen::Matrix3d F = Eigen::Matrix3d::Zero();
+    for (int a = 0; a < NN; ++a) {
+        const Vec3 d = x[c[a]] - xc;
+        for (int i = 0; i < DIM; ++i)
+            for (int j = 0; j < DIM; ++j)
+                F(i, j) += d[world_axis(DIM, i)] * g[a + j * NN]; // g is NN x DIM
+    }
+    const Eigen::Matrix3d R = polar_rotation(F, DIM);
+    VecD u, w;
+    for (int a = 0; a < NN; ++a) {
+        const Vec3 d = x[c[a]] - xc, D = X[c[a]] - Xc, va = v[c[a]];
+        for (int i = 0; i < DIM; ++i) {
+            Real rd = 0, rv = 0;
+            for (int j = 0; j < DIM; ++j) {
+                rd += R(j, i) * d[world_axis(DIM, j)];
+                rv += R(j, i) * va[world_axis(DIM, j)];
+            }
+            u[a * DIM + i] = rd - D[world_axis(DIM, i)];
+            w[a * DIM + i] = rv;
+        }
+    }
+    const Eigen::Map<const Eigen::Matrix<Real, ndof, ndof>> K(
+        &so.stiffness[k * std::size_t(ndof * ndof)]);
+    if (update_damage && (mat.damages() || mat.erosion_strain > 0)) {
+        const Eigen::Map<const Eigen::Matrix<Real, ns, ndof>> S(
+            &so.strain_op[k * std::size_t(ns * ndof)]);
+        const Vec6 eps = S * u;
+        const Eigen::Vector3d pr = principal_strains(eps, DIM);
+        if (mat.damages()) {
+            const Real p[3] = {pr[0], pr[1], pr[2]};
+            Real& kappa = so.kappa[std::size_t(e)];
+            kappa = std::max(kappa, mazars_equivalent_strain(p));
+            so.damage[std::size_t(e)] = mazars_damage(mat, kappa);
+        }
+        if (mat.erosion_strain > 0 && pr[0] > mat.erosion_strain) {
+            so.eroded[std::size_t(e)] = 1;
+            for (int k = 0; k < ndof; ++k) out[k] = 0;
+            return;
+        }
+    }
+    VecD f = K * u;
+    if (beta > 0) f += beta * (K * w);
+    const Real scale = 1 - so.damage[std::size_t(e)];
+    for (int a = 0; a < NN; ++a)
+        for (int i = 0; i < DIM; ++i) {
+            Real r = 0;
+            for (int j = 0; j < DIM; ++j) r += R(i, j) * f[a * DIM + j];
+            out[a * DIM + i] = -scale * r;
+        }
+}
+
+template <int NN, int DIM>
+void solid_forces(FemSolver::Solid& s, const FemMaterial& mat, const Vec3* X, const Vec3* x,
+                  const Vec3* v, Real beta, bool update_damage) {
+    FemSolver::Solid* sp = &s;
+    const FemMaterial* mp = &mat;
+    exec::for_each(Index(s.volume.size()), [=](Index e) {
+        element_force<NN, DIM>(*sp, *mp, X, x, v, beta, update_damage, e);
+    });
+}
+
+} // namespace
+
 void FemSolver::internal_forces(bool update_damage) {
     ScopedTimer timer(t_forces_);
     const int dim = params_.dim;
     const Real beta = params_.beta;
     for (auto& s : solids_) {
-        const int nn = nodes_of(s.type), ndof = nn * dim, ns = dim == 3 ? 6 : 3;
         const FemMaterial& mat = materials_[std::size_t(s.material)];
         const Vec3 *X = X_.data(), *x = x_.data(), *v = v_.data();
-        Solid* sp = &s;
-        exec::for_each(Index(s.volume.size()), [=, &mat](Index e) {
-            Solid& so = *sp;
-            Real* out = &so.force[std::size_t(e) * std::size_t(ndof)];
-            if (so.eroded[std::size_t(e)]) {
-                for (int k = 0; k < ndof; ++k) out[k] = 0;
-                return;
-            }
-            const std::int32_t* c = &so.conn[std::size_t(e) * std::size_t(nn)];
-            const Real* g = &so.gradient[std::size_t(e) * std::size_t(nn * dim)];
-            Vec3 xc{}, Xc{};
-            for (int a = 0; a < nn; ++a) {
-                xc = xc + x[c[a]];
-                Xc = Xc + X[c[a]];
-            }
-            xc = (Real(1) / nn) * xc;
-            Xc = (Real(1) / nn) * Xc;
-            Eigen::Matrix3d F = Eigen::Matrix3d::Zero();
-            for (int a = 0; a < nn; ++a) {
-                const Vec3 d = x[c[a]] - xc;
-                for (int i = 0; i < dim; ++i)
-                    for (int j = 0; j < dim; ++j)
-                        F(i, j) += d[world_axis(dim, i)] * g[a + j * nn]; // g is nn x dim
-            }
-            const Eigen::Matrix3d R = polar_rotation(F, dim);
-            VecN u(ndof), w(ndof);
-            for (int a = 0; a < nn; ++a) {
-                const Vec3 d = x[c[a]] - xc, D = X[c[a]] - Xc, va = v[c[a]];
-                for (int i = 0; i < dim; ++i) {
-                    Real rd = 0, rv = 0;
-                    for (int j = 0; j < dim; ++j) {
-                        rd += R(j, i) * d[world_axis(dim, j)];
-                        rv += R(j, i) * va[world_axis(dim, j)];
-                    }
-                    u[a * dim + i] = rd - D[world_axis(dim, i)];
-                    w[a * dim + i] = rv;
-                }
-            }
-            const Eigen::Map<const Eigen::MatrixXd> K(
-                &so.stiffness[std::size_t(e) * std::size_t(ndof * ndof)], ndof, ndof);
-            if (update_damage && (mat.damages() || mat.erosion_strain > 0)) {
-                const Eigen::Map<const Eigen::MatrixXd> S(
-                    &so.strain_op[std::size_t(e) * std::size_t(ns * ndof)], ns, ndof);
-                const Vec6 eps = S * u;
-                const Eigen::Vector3d pr = principal_strains(eps, dim);
-                if (mat.damages()) {
-                    const Real p[3] = {pr[0], pr[1], pr[2]};
-                    Real& kappa = so.kappa[std::size_t(e)];
-                    kappa = std::max(kappa, mazars_equivalent_strain(p));
-                    so.damage[std::size_t(e)] = mazars_damage(mat, kappa);
-                }
-                if (mat.erosion_strain > 0 && pr[0] > mat.erosion_strain) {
-                    so.eroded[std::size_t(e)] = 1;
-                    for (int k = 0; k < ndof; ++k) out[k] = 0;
-                    return;
-                }
-            }
-            VecN f = K * u;
-            if (beta > 0) f += beta * (K * w);
-            const Real scale = 1 - so.damage[std::size_t(e)];
-            for (int a = 0; a < nn; ++a)
-                for (int i = 0; i < dim; ++i) {
-                    Real r = 0;
-                    for (int j = 0; j < dim; ++j) r += R(i, j) * f[a * dim + j];
-                    out[a * dim + i] = -scale * r;
-                }
-        });
+        switch (s.type) {
+        case ElementType::hex8:
+            solid_forces<8, 3>(s, mat, X, x, v, beta, update_damage);
+            break;
+        case ElementType::tet4:
+            solid_forces<4, 3>(s, mat, X, x, v, beta, update_damage);
+            break;
+        case ElementType::tet10:
+            solid_forces<10, 3>(s, mat, X, x, v, beta, update_damage);
+            break;
+        case ElementType::quad4:
+            solid_forces<4, 2>(s, mat, X, x, v, beta, update_damage);
+            break;
+        }
     }
     const std::int32_t* start = inc_start_.data();
     const auto* inc = inc_.data();
@@ -380,7 +452,8 @@ ElementResult FemSolver::element_result(std::size_t si, std::size_t e) const {
     r.damage = s.damage[e];
     r.eroded = s.eroded[e] != 0;
     const std::int32_t* c = &s.conn[e * std::size_t(nn)];
-    const Real* g = &s.gradient[e * std::size_t(nn * dim)];
+    const std::size_t k = std::size_t(s.shape[e]);
+    const Real* g = &s.gradient[k * std::size_t(nn * dim)];
     Vec3 xc{}, Xc{};
     for (int a = 0; a < nn; ++a) {
         xc = xc + x_[std::size_t(c[a])];
@@ -404,7 +477,7 @@ ElementResult FemSolver::element_result(std::size_t si, std::size_t e) const {
             u[a * dim + i] = rd - D[world_axis(dim, i)];
         }
     }
-    const Eigen::Map<const Eigen::MatrixXd> S(&s.strain_op[e * std::size_t(ns * ndof)], ns, ndof);
+    const Eigen::Map<const Eigen::MatrixXd> S(&s.strain_op[k * std::size_t(ns * ndof)], ns, ndof);
     const Vec6 eps = S * u;
     const Eigen::MatrixXd C = elasticity_matrix(mat.youngs_modulus, mat.poisson, dim);
     const Vec6 sig = (1 - r.damage) * (C * eps);
@@ -444,8 +517,8 @@ Eigen::MatrixXd FemSolver::assemble_stiffness() const {
         const int nn = nodes_of(s.type), ndof = nn * dim;
         for (std::size_t e = 0; e < s.volume.size(); ++e) {
             if (s.eroded[e]) continue;
-            const Eigen::Map<const Eigen::MatrixXd> ke(&s.stiffness[e * std::size_t(ndof * ndof)],
-                                                       ndof, ndof);
+            const Eigen::Map<const Eigen::MatrixXd> ke(
+                &s.stiffness[std::size_t(s.shape[e]) * std::size_t(ndof * ndof)], ndof, ndof);
             const std::int32_t* c = &s.conn[e * std::size_t(nn)];
             for (int a = 0; a < nn; ++a)
                 for (int b = 0; b < nn; ++b)

@@ -99,9 +99,12 @@ public:
         int material;
         std::int32_t first_node, nodes;
         std::vector<std::int32_t> conn; // global node ids
-        std::vector<Real> stiffness;    // per element ndof x ndof (column-major)
-        std::vector<Real> strain_op;    // per element ns x ndof
-        std::vector<Real> gradient;     // per element nn x dim
+        // Element matrices are shared between elements of the same shape (structured meshes):
+        // element e uses matrix set shape[e] of the pools below.
+        std::vector<std::int32_t> shape;
+        std::vector<Real> stiffness; // per shape ndof x ndof (column-major)
+        std::vector<Real> strain_op; // per shape ns x ndof
+        std::vector<Real> gradient;  // per shape nn x dim
         std::vector<Real> volume, kappa, damage;
         std::vector<std::uint8_t> eroded;
         std::vector<Real> force; // per element ndof (internal force on its nodes)
