@@ -57,4 +57,38 @@ void for_each_pair(const neighbors::PairList& list, Index n, ScatterBuffers& buf
     }
 }
 
+// The same loop with W values per particle: pair(load(i), i, j, acc_i, out_j) adds to
+// acc_i[0..W) and out_j[0..W); out(i, totals) receives each particle's W totals.
+template <int W, class Load, class Pair, class Out>
+void for_each_pair_w(const neighbors::PairList& list, Index n, ScatterBuffers& buf,
+                     const Load& load, const Pair& pair, const Out& out) {
+    const int nt = omp_get_max_threads();
+    buf.per_thread.resize(std::size_t(nt));
+    for (auto& b : buf.per_thread) b.resize(W * std::size_t(n));
+    const Index* nb = list.neighbors();
+#pragma omp parallel
+    {
+        Real* b = buf.per_thread[std::size_t(omp_get_thread_num())].data();
+        std::fill(b, b + W * std::size_t(n), Real(0));
+#pragma omp for schedule(static, 64)
+        for (Index i = 0; i < n; ++i) {
+            Real acc[W] = {};
+            const Index* js = nb + list.begin(i);
+            const Index c = list.count(i);
+            const auto data_i = load(i);
+            for (Index k = 0; k < c; ++k) pair(data_i, i, js[k], acc, b + W * js[k]);
+            for (int w = 0; w < W; ++w) b[W * i + w] += acc[w];
+        }
+#pragma omp for schedule(static)
+        for (Index i = 0; i < n; ++i) {
+            Real total[W] = {};
+            for (int t = 0; t < nt; ++t) {
+                const Real* bt = buf.per_thread[std::size_t(t)].data() + W * i;
+                for (int w = 0; w < W; ++w) total[w] += bt[w];
+            }
+            out(i, total);
+        }
+    }
+}
+
 } // namespace debrisflow::exec

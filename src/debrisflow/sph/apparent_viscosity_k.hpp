@@ -12,6 +12,39 @@ namespace debrisflow::sph {
 // extrapolated velocity v_B = -(d_B / d_A) v_A (Morris et al. 1997, eq. 30), as in the
 // viscous pair term, so the wall shear is not halved. Boundary particles get mu = 0 (the pair
 // term uses the fluid partner's viscosity).
+// v_j - v_i as the velocity-gradient sum of fluid particle i sees it: a wall particle j
+// carries the no-slip extrapolated velocity (Morris et al. 1997, eq. 30).
+DF_HD inline Vec3 gradient_velocity_difference(const particles::ParticleView& pv, Index i, Index j,
+                                               Vec3 xi, Vec3 vi, Real half_dp) {
+    Vec3 dv = pv.vel(j) - vi;
+    if (!pv.is_fluid(j) && pv.wd[j] > 0) {
+        const Vec3 n{pv.wnx[j], pv.wny[j], pv.wnz[j]};
+        const Real d_fluid = dot(xi - pv.pos(j), n) - pv.wd[j];
+        const Real beta = 1 + pv.wd[j] / (d_fluid > half_dp ? d_fluid : half_dp);
+        dv = beta * dv;
+    }
+    (void)i;
+    return dv;
+}
+
+// gamma_dot = sqrt(2 D:D) from the symmetric gradient D = (xx, yy, zz, xy, xz, yz).
+DF_HD inline Real strain_rate_of(const Real d[6]) {
+    return std::sqrt(2 * (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) +
+                     4 * (d[3] * d[3] + d[4] * d[4] + d[5] * d[5]));
+}
+
+// Adds vol (dv (x) gw) symmetrised to D = (xx, yy, zz, xy, xz, yz).
+DF_HD inline void add_symmetric_gradient(Real d[6], Real vol, Vec3 dv, Vec3 gw) {
+    d[0] += vol * dv.x * gw.x;
+    d[1] += vol * dv.y * gw.y;
+    d[2] += vol * dv.z * gw.z;
+    d[3] += Real(0.5) * vol * (dv.x * gw.y + dv.y * gw.x);
+    d[4] += Real(0.5) * vol * (dv.x * gw.z + dv.z * gw.x);
+    d[5] += Real(0.5) * vol * (dv.y * gw.z + dv.z * gw.y);
+}
+
+// Gather form (one particle, its cell neighbours): device and gather paths. The host path
+// sums the same terms over the half pair list (SphSolver::update_viscosity).
 template <class Kernel, class Model> struct ApparentViscosity {
     particles::ParticleView pv;
     neighbors::GridView grid;
@@ -21,26 +54,13 @@ template <class Kernel, class Model> struct ApparentViscosity {
 
     DF_HD Real strain_rate(Index i) const {
         const Vec3 xi = pv.pos(i), vi = pv.vel(i);
-        Real g[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+        Real d[6] = {0, 0, 0, 0, 0, 0};
         grid.for_each_neighbor(i, xi, pv.x, pv.y, pv.z, [&](Index j, Vec3 r, Real r2) {
             const Vec3 gw = kernel.grad_over_r(std::sqrt(r2)) * r;
-            Vec3 dv = pv.vel(j) - vi;
-            if (!pv.is_fluid(j) && pv.wd[j] > 0) {
-                const Vec3 n{pv.wnx[j], pv.wny[j], pv.wnz[j]};
-                const Real d_fluid = dot(xi - pv.pos(j), n) - pv.wd[j];
-                const Real beta = 1 + pv.wd[j] / (d_fluid > half_dp ? d_fluid : half_dp);
-                dv = beta * dv; // v_j - v_i with the wall's extrapolated relative velocity
-            }
-            const Real vol = pv.mass[j] / pv.rho[j];
-            for (int a = 0; a < 3; ++a)
-                for (int b = 0; b < 3; ++b) g[a][b] += vol * dv[a] * gw[b];
+            add_symmetric_gradient(d, pv.mass[j] / pv.rho[j],
+                                   gradient_velocity_difference(pv, i, j, xi, vi, half_dp), gw);
         });
-        const Real sxx = g[0][0], syy = g[1][1], szz = g[2][2];
-        const Real sxy = Real(0.5) * (g[0][1] + g[1][0]);
-        const Real sxz = Real(0.5) * (g[0][2] + g[2][0]);
-        const Real syz = Real(0.5) * (g[1][2] + g[2][1]);
-        return std::sqrt(2 * (sxx * sxx + syy * syy + szz * szz) +
-                         4 * (sxy * sxy + sxz * sxz + syz * syz));
+        return strain_rate_of(d);
     }
 
     DF_HD void operator()(Index i) const {

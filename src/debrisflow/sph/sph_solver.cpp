@@ -87,7 +87,7 @@ void SphSolver::update_pressure() {
     });
 }
 
-void SphSolver::update_viscosity() {
+void SphSolver::update_viscosity(bool pairs) {
     auto pv = set_.view();
     const auto gv = grid_.view();
     const Real half_dp = Real(0.5) * params_.dp;
@@ -96,7 +96,39 @@ void SphSolver::update_viscosity() {
             using K = std::decay_t<decltype(kernel)>;
             using V = std::decay_t<decltype(visc)>;
             if constexpr (V::needs_apparent_viscosity) {
-                exec::for_each(pv.n, ApparentViscosity<K, V>{pv, gv, kernel, visc, half_dp});
+                if (!pairs) {
+                    exec::for_each(pv.n, ApparentViscosity<K, V>{pv, gv, kernel, visc, half_dp});
+                    return;
+                }
+                // Half pair list: each pair adds vol_j (v_j - v_i) (x) grad W_ij to i and the
+                // mirror term vol_i (v_i - v_j) (x) grad W_ji = vol_i (v_j - v_i) (x) grad W_ij
+                // to j (fluid particles only; wall partners with their no-slip velocity).
+                const Real support2 = support_ * support_;
+                exec::for_each_pair_w<6>(
+                    list_, pv.n, buffers_, [=](Index i) { return i; },
+                    [=](Index, Index i, Index j, Real* di, Real* dj) {
+                        const bool fi = pv.is_fluid(i), fj = pv.is_fluid(j);
+                        if (!fi && !fj) return;
+                        const Vec3 xi = pv.pos(i), xj = pv.pos(j);
+                        const Vec3 r = gv.separation(xi, xj);
+                        const Real r2 = dot(r, r);
+                        if (r2 >= support2) return;
+                        const Vec3 gw = kernel.grad_over_r(std::sqrt(r2)) * r;
+                        if (fi)
+                            add_symmetric_gradient(
+                                di, pv.mass[j] / pv.rho[j],
+                                gradient_velocity_difference(pv, i, j, xi, pv.vel(i), half_dp), gw);
+                        if (fj)
+                            add_symmetric_gradient(
+                                dj, pv.mass[i] / pv.rho[i],
+                                -1 * gradient_velocity_difference(pv, j, i, xj, pv.vel(j), half_dp),
+                                gw);
+                    },
+                    [=](Index i, const Real* d) {
+                        pv.mu[i] = pv.is_fluid(i)
+                                       ? visc.apparent_viscosity(strain_rate_of(d), pv.p[i])
+                                       : Real(0);
+                    });
             } else {
                 const Real mu = params_.rho0 * visc.kinematic_viscosity();
                 exec::for_each(pv.n, [=](Index i) { pv.mu[i] = pv.is_fluid(i) ? mu : 0; });
@@ -116,9 +148,9 @@ Real SphSolver::max_kinematic_viscosity() const {
                         [=](Index i) { return pv.is_fluid(i) ? pv.mu[i] / pv.rho[i] : Real(0); });
 }
 
-template <class F> void SphSolver::with_pair_terms(F&& f) {
+template <class F> void SphSolver::with_pair_terms(F&& f, bool pairs) {
     update_pressure();
-    update_viscosity();
+    update_viscosity(pairs);
     const bool sps = std::holds_alternative<models::LaminarSpsViscosity>(models_.viscosity);
     if (sps) compute_sps_stress();
     auto pv = set_.view();
@@ -140,38 +172,42 @@ void SphSolver::compute_forces() {
     const auto gv = grid_.view();
     const Real support2 = support_ * support_;
     const Vec3 gravity = params_.gravity;
-    with_pair_terms([&](const auto& terms) {
-        using Side = typename std::decay_t<decltype(terms)>::Side;
-        exec::for_each_pair(
-            list_, pv.n, buffers_, [=](Index i) { return terms.side(i); },
-            [=](const Side& a, Index i, Index j, Vec3& acc_i, Real& drho_i, Real* out_j) {
-                const Side b = terms.side(j);
-                const Vec3 r = gv.separation(a.x, b.x);
-                const Real r2 = dot(r, r);
-                if (r2 >= support2) return;
-                const auto t = terms(a, i, b, j, r, r2);
-                acc_i += b.m * t.g;
-                drho_i += b.m * t.cont + t.d.i;
-                out_j[0] -= a.m * t.g.x;
-                out_j[1] -= a.m * t.g.y;
-                out_j[2] -= a.m * t.g.z;
-                out_j[3] += a.m * t.cont + t.d.j;
-            },
-            [=](Index i, Vec3 acc, Real drho) {
-                if (pv.is_fluid(i)) acc += gravity;
-                pv.ax[i] = acc.x;
-                pv.ay[i] = acc.y;
-                pv.az[i] = acc.z;
-                pv.drho[i] = drho;
-            });
-    });
+    with_pair_terms(
+        [&](const auto& terms) {
+            using Side = typename std::decay_t<decltype(terms)>::Side;
+            exec::for_each_pair(
+                list_, pv.n, buffers_, [=](Index i) { return terms.side(i); },
+                [=](const Side& a, Index i, Index j, Vec3& acc_i, Real& drho_i, Real* out_j) {
+                    const Side b = terms.side(j);
+                    const Vec3 r = gv.separation(a.x, b.x);
+                    const Real r2 = dot(r, r);
+                    if (r2 >= support2) return;
+                    const auto t = terms(a, i, b, j, r, r2);
+                    acc_i += b.m * t.g;
+                    drho_i += b.m * t.cont + t.d.i;
+                    out_j[0] -= a.m * t.g.x;
+                    out_j[1] -= a.m * t.g.y;
+                    out_j[2] -= a.m * t.g.z;
+                    out_j[3] += a.m * t.cont + t.d.j;
+                },
+                [=](Index i, Vec3 acc, Real drho) {
+                    if (pv.is_fluid(i)) acc += gravity;
+                    pv.ax[i] = acc.x;
+                    pv.ay[i] = acc.y;
+                    pv.az[i] = acc.z;
+                    pv.drho[i] = drho;
+                });
+        },
+        true);
 }
 
 void SphSolver::compute_forces_gather() {
     const auto gv = grid_.view();
-    with_pair_terms([&](const auto& terms) {
-        exec::for_each(set_.size(), make_gather(terms, gv, params_.gravity));
-    });
+    with_pair_terms(
+        [&](const auto& terms) {
+            exec::for_each(set_.size(), make_gather(terms, gv, params_.gravity));
+        },
+        false);
 }
 
 namespace {

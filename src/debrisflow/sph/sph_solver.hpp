@@ -58,11 +58,13 @@ private:
     Real boundary_min_density() const;
     void compute_sps_stress();
     // Per-particle apparent viscosity (generalised-Newtonian models; constant otherwise).
-    void update_viscosity();
+    // Apparent viscosities of a generalised-Newtonian fluid: over the half pair list (`pairs`)
+    // or by a per-particle gather over the cell grid.
+    void update_viscosity(bool pairs);
     // Largest kinematic viscosity now (the viscous time-step limit).
     Real max_kinematic_viscosity() const;
     // Updates pressures (and SPS stresses) and calls f(PairTerms<K, V, D>) for the case's models.
-    template <class F> void with_pair_terms(F&& f);
+    template <class F> void with_pair_terms(F&& f, bool pairs);
     Real max_displacement() const;
     SphParams params_;
     particles::ParticleSet& set_;
