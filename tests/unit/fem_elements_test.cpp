@@ -1,6 +1,7 @@
 // Solid elements: patch tests on distorted meshes, masses, rigid-body modes, bending without
 // locking, structured meshers and the Gmsh reader.
 #include "debrisflow/core/error.hpp"
+#include "debrisflow/coupling/sph_fem.hpp"
 #include "debrisflow/fem/element_matrices.hpp"
 #include "debrisflow/fem/fem_mesh.hpp"
 #include "debrisflow/fem/fem_solver.hpp"
@@ -321,4 +322,53 @@ TEST(FemMaterials, MazarsDamageAndErosion) {
     Real f = 0;
     for (Real v : fem.solids()[0].force) f += std::fabs(v);
     EXPECT_EQ(f, 0);
+}
+
+// SPH <-> FEM shell: boundary particles sit inside the solid within layers x dp of its surface,
+// follow the elements, carry the fluid force back to the nodes with total force conserved,
+// and leave with their element when it erodes.
+TEST(FemSphShell, FollowsTheElementsAndLeavesWithErodedOnes) {
+    FemMaterial m = steel();
+    m.erosion_strain = 0.05;
+    FemParams p;
+    p.dim = 2;
+    p.gravity = {};
+    FemSolver fem(p, {m});
+    fem.add_solid("plate", box_mesh(ElementType::quad4, {0, 0, 0}, {0.1, 0, 0.04}, {10, 1, 4}), 0);
+    fem.initialize();
+    particles::ParticleSet set;
+    set.add({0.05, 0, 0.02}, {}, 1000, 0.1, particles::Kind::fluid, 0); // inside: removed
+    set.add({0.05, 0, 0.08}, {}, 1000, 0.1, particles::Kind::fluid, 0); // outside: kept
+    coupling::SphFemCoupling shell(fem, set, 0.005, 2, 1000, 2);
+    EXPECT_EQ(set.count(particles::Kind::fluid), 1);
+    // 2 layers of dp = 5 mm inside a 100 x 40 mm plate on a lattice offset by dp/2.
+    EXPECT_EQ(shell.particles(), 20u * 8u - 16u * 4u);
+    // A rigid translation of the nodes moves the particles with them.
+    for (std::size_t i = 0; i < fem.nodes(); ++i)
+        fem.positions()[i] = fem.reference()[i] + Vec3{0.01, 0, 0.002};
+    const Real x0 = set.x[1];
+    shell.move_particles(0);
+    EXPECT_NEAR(set.x[1] - x0, 0.01, 1e-14);
+    // Forces: every boundary particle pushed by 1 N along x: the nodes receive the total.
+    for (Index i = 0; i < set.size(); ++i) set.ax[i] = set.kind[i] ? 1 / set.mass[i] : 0;
+    std::vector<Vec3> f(fem.nodes());
+    shell.collect_forces(f);
+    Vec3 total{};
+    for (const auto& v : f) total = total + v;
+    EXPECT_NEAR(total.x, Real(shell.particles()), 1e-9);
+    EXPECT_NEAR(shell.last_force().x, Real(shell.particles()), 1e-9);
+    // Erode the corner element (stretch its top-right node far out): its particles go.
+    EXPECT_TRUE(shell.eroded_keep_mask().empty());
+    const auto corner = fem.node_set("plate.xmax");
+    for (auto n : corner)
+        if (fem.reference()[std::size_t(n)].z > 0.039) fem.positions()[std::size_t(n)].x += 0.01;
+    fem.advance(0);
+    ASSERT_EQ(fem.eroded_elements(), 1);
+    const auto keep = shell.eroded_keep_mask();
+    ASSERT_FALSE(keep.empty());
+    const auto before = set.size();
+    set.compact(keep);
+    EXPECT_EQ(before - set.size(), 4); // the corner element held 2 x 2 particles
+    shell.move_particles(0);           // survivors are found again by id
+    EXPECT_EQ(shell.eroded_keep_mask().size(), 0u);
 }

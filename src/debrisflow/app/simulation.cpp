@@ -255,6 +255,16 @@ io::RunReport Simulation::run(const RunOptions& opt) {
             log_.line(fmt::format("t = {:.6g} s: wall '{}' removed", s.t, spec_.walls[w].name));
         });
     }
+    // Eroded elements take their SPH boundary particles with them, between steps.
+    if (sph_fem_)
+        integ.add_hook(time::Hook::after_integration, [this](const time::StepInfo& s) {
+            const auto keep = sph_fem_->eroded_keep_mask();
+            if (keep.empty()) return;
+            const Index before = set_.size();
+            solver_->remove_particles(keep);
+            log_.line(fmt::format("t = {:.6g} s: {} eroded elements; {} boundary particles removed",
+                                  s.t, fem_->eroded_elements(), before - set_.size()));
+        });
     // Open boundaries act between the integration and the neighbour search of each step.
     if (!inlets_.empty() || !outlets_.empty() || !feeds_.empty() || !rock_feeds_.empty())
         integ.add_hook(time::Hook::after_integration, [this](const time::StepInfo& s) {

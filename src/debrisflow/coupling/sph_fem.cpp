@@ -152,6 +152,25 @@ void SphFemCoupling::move_particles(Real ahead) {
     });
 }
 
+std::vector<std::uint8_t> SphFemCoupling::eroded_keep_mask() {
+    const long eroded = fem_.eroded_elements();
+    if (eroded == eroded_seen_) return {};
+    eroded_seen_ = eroded;
+    refresh_members();
+    std::vector<std::uint8_t> keep(std::size_t(set_.size()), 1);
+    bool any = false;
+    for (std::size_t k = 0; k < members_.size(); ++k) {
+        const Row& r = rows_[member_rows_[k]];
+        if (!fem_.solids()[std::size_t(r.solid)].eroded[std::size_t(r.element)]) continue;
+        keep[std::size_t(members_[k])] = 0;
+        row_of_id_.erase(set_.id[members_[k]]);
+        any = true;
+    }
+    if (!any) return {};
+    layout_seen_ = ~std::uint64_t(0); // members are found again after the removal
+    return keep;
+}
+
 void SphFemCoupling::collect_forces(std::vector<Vec3>& f) {
     refresh_members();
     Vec3 total{};

@@ -27,6 +27,10 @@ public:
     // Adds the fluid forces on the particles to the nodes [N].
     void collect_forces(std::vector<Vec3>& f);
     Vec3 last_force() const { return last_force_; } // total fluid force on the solids [N]
+    // Particles of eroded elements leave with their element: a keep-mask over the particle set
+    // (1 = keep) when some must go, else empty. Apply it between steps
+    // (SphSolver::remove_particles).
+    std::vector<std::uint8_t> eroded_keep_mask();
     std::size_t particles() const { return rows_.size(); }
 
 private:
@@ -46,6 +50,7 @@ private:
     std::vector<Index> members_;
     std::vector<std::uint32_t> member_rows_;
     std::uint64_t layout_seen_ = ~std::uint64_t(0);
+    long eroded_seen_ = 0;
     Vec3 last_force_;
 };
 
