@@ -220,6 +220,42 @@ void FemSolver::initialize() {
 
 namespace {
 
+// Corotational frame of an element (Felippa & Haugen 2005): the rotation R of the polar
+// decomposition of F = sum (x_a - x_c) (x) g_a at the centre, the local displacements
+// u = R^T (x_a - x_c) - (X_a - X_c) and, when w is given, the local velocities R^T v_a.
+template <int DIM>
+inline Eigen::Matrix3d corotate(int nn, const std::int32_t* c, const Real* g, const Vec3* X,
+                                const Vec3* x, const Vec3* v, Real* u, Real* w) {
+    Vec3 xc{}, Xc{};
+    for (int a = 0; a < nn; ++a) {
+        xc = xc + x[c[a]];
+        Xc = Xc + X[c[a]];
+    }
+    xc = (Real(1) / nn) * xc;
+    Xc = (Real(1) / nn) * Xc;
+    Eigen::Matrix3d F = Eigen::Matrix3d::Zero();
+    for (int a = 0; a < nn; ++a) {
+        const Vec3 d = x[c[a]] - xc;
+        for (int i = 0; i < DIM; ++i)
+            for (int j = 0; j < DIM; ++j)
+                F(i, j) += d[world_axis(DIM, i)] * g[a + j * nn]; // g is nn x DIM
+    }
+    const Eigen::Matrix3d R = polar_rotation(F, DIM);
+    for (int a = 0; a < nn; ++a) {
+        const Vec3 d = x[c[a]] - xc, D = X[c[a]] - Xc;
+        for (int i = 0; i < DIM; ++i) {
+            Real rd = 0, rv = 0;
+            for (int j = 0; j < DIM; ++j) {
+                rd += R(j, i) * d[world_axis(DIM, j)];
+                if (w) rv += R(j, i) * v[c[a]][world_axis(DIM, j)];
+            }
+            u[a * DIM + i] = rd - D[world_axis(DIM, i)];
+            if (w) w[a * DIM + i] = rv;
+        }
+    }
+    return R;
+}
+
 // Corotational force of element e of a solid with NN nodes in DIM dimensions (fixed sizes so
 // that K_e u is an unrolled small product): f = -(1 - D) R K_e (R^T (x - x_c) - (X - X_c)),
 // plus the stiffness-proportional damping beta K_e R^T v; updates damage and erosion.
@@ -235,35 +271,9 @@ void element_force(FemSolver::Solid& so, const FemMaterial& mat, const Vec3* X, 
     }
     const std::int32_t* c = &so.conn[std::size_t(e) * std::size_t(NN)];
     const std::size_t k = std::size_t(so.shape[std::size_t(e)]);
-    const Real* g = &so.gradient[k * std::size_t(NN * DIM)];
-    Vec3 xc{}, Xc{};
-    for (int a = 0; a < NN; ++a) {
-        xc = xc + x[c[a]];
-        Xc = Xc + X[c[a]];
-    }
-    xc = (Real(1) / NN) * xc;
-    Xc = (Real(1) / NN) * Xc;
-    Eigen::Matrix3d F = Eigen::Matrix3d::Zero();
-    for (int a = 0; a < NN; ++a) {
-        const Vec3 d = x[c[a]] - xc;
-        for (int i = 0; i < DIM; ++i)
-            for (int j = 0; j < DIM; ++j)
-                F(i, j) += d[world_axis(DIM, i)] * g[a + j * NN]; // g is NN x DIM
-    }
-    const Eigen::Matrix3d R = polar_rotation(F, DIM);
     VecD u, w;
-    for (int a = 0; a < NN; ++a) {
-        const Vec3 d = x[c[a]] - xc, D = X[c[a]] - Xc, va = v[c[a]];
-        for (int i = 0; i < DIM; ++i) {
-            Real rd = 0, rv = 0;
-            for (int j = 0; j < DIM; ++j) {
-                rd += R(j, i) * d[world_axis(DIM, j)];
-                rv += R(j, i) * va[world_axis(DIM, j)];
-            }
-            u[a * DIM + i] = rd - D[world_axis(DIM, i)];
-            w[a * DIM + i] = rv;
-        }
-    }
+    const Eigen::Matrix3d R =
+        corotate<DIM>(NN, c, &so.gradient[k * std::size_t(NN * DIM)], X, x, v, u.data(), w.data());
     const Eigen::Map<const Eigen::Matrix<Real, ndof, ndof>> K(
         &so.stiffness[k * std::size_t(ndof * ndof)]);
     if (update_damage && (mat.damages() || mat.erosion_strain > 0)) {
@@ -454,29 +464,10 @@ ElementResult FemSolver::element_result(std::size_t si, std::size_t e) const {
     const std::int32_t* c = &s.conn[e * std::size_t(nn)];
     const std::size_t k = std::size_t(s.shape[e]);
     const Real* g = &s.gradient[k * std::size_t(nn * dim)];
-    Vec3 xc{}, Xc{};
-    for (int a = 0; a < nn; ++a) {
-        xc = xc + x_[std::size_t(c[a])];
-        Xc = Xc + X_[std::size_t(c[a])];
-    }
-    xc = (Real(1) / nn) * xc;
-    Xc = (Real(1) / nn) * Xc;
-    Eigen::Matrix3d F = Eigen::Matrix3d::Zero();
-    for (int a = 0; a < nn; ++a) {
-        const Vec3 d = x_[std::size_t(c[a])] - xc;
-        for (int i = 0; i < dim; ++i)
-            for (int j = 0; j < dim; ++j) F(i, j) += d[world_axis(dim, i)] * g[a + j * nn];
-    }
-    const Eigen::Matrix3d R = polar_rotation(F, dim);
     VecN u(ndof);
-    for (int a = 0; a < nn; ++a) {
-        const Vec3 d = x_[std::size_t(c[a])] - xc, D = X_[std::size_t(c[a])] - Xc;
-        for (int i = 0; i < dim; ++i) {
-            Real rd = 0;
-            for (int j = 0; j < dim; ++j) rd += R(j, i) * d[world_axis(dim, j)];
-            u[a * dim + i] = rd - D[world_axis(dim, i)];
-        }
-    }
+    const Eigen::Matrix3d R =
+        dim == 3 ? corotate<3>(nn, c, g, X_.data(), x_.data(), nullptr, u.data(), nullptr)
+                 : corotate<2>(nn, c, g, X_.data(), x_.data(), nullptr, u.data(), nullptr);
     const Eigen::Map<const Eigen::MatrixXd> S(&s.strain_op[k * std::size_t(ns * ndof)], ns, ndof);
     const Vec6 eps = S * u;
     const Eigen::MatrixXd C = elasticity_matrix(mat.youngs_modulus, mat.poisson, dim);

@@ -1,4 +1,5 @@
 #include "debrisflow/fem/fem_surface.hpp"
+#include "debrisflow/dem/wall_geometry_k.hpp"
 #include "debrisflow/fem/fem_solver.hpp"
 #include <Eigen/Dense>
 #include <algorithm>
@@ -16,28 +17,6 @@ const std::vector<std::vector<int>>& faces_of(ElementType t) {
     static const std::vector<std::vector<int>> tet = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
     static const std::vector<std::vector<int>> quad = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
     return t == ElementType::hex8 ? hex : t == ElementType::quad4 ? quad : tet;
-}
-
-Vec3 closest_on_triangle(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
-    // Ericson, Real-Time Collision Detection, 5.1.5.
-    const Vec3 ab = b - a, ac = c - a, ap = p - a;
-    const Real d1 = dot(ab, ap), d2 = dot(ac, ap);
-    if (d1 <= 0 && d2 <= 0) return a;
-    const Vec3 bp = p - b;
-    const Real d3 = dot(ab, bp), d4 = dot(ac, bp);
-    if (d3 >= 0 && d4 <= d3) return b;
-    const Real vc = d1 * d4 - d3 * d2;
-    if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + (d1 / (d1 - d3)) * ab;
-    const Vec3 cp = p - c;
-    const Real d5 = dot(ab, cp), d6 = dot(ac, cp);
-    if (d6 >= 0 && d5 <= d6) return c;
-    const Real vb = d5 * d2 - d1 * d6;
-    if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + (d2 / (d2 - d6)) * ac;
-    const Real va = d3 * d6 - d5 * d4;
-    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
-        return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
-    const Real denom = 1 / (va + vb + vc);
-    return a + (vb * denom) * ab + (vc * denom) * ac;
 }
 
 } // namespace
@@ -105,7 +84,7 @@ Real facet_distance(const SurfaceFacet& f, const std::vector<Vec3>& x, Vec3 p) {
         const Real s = std::clamp(dot(p - a, d) / dot(d, d), Real(0), Real(1));
         q = a + s * d;
     } else {
-        q = closest_on_triangle(p, a, b, x[std::size_t(f.nodes[2])]);
+        q = dem::closest_on_triangle(p, a, b, x[std::size_t(f.nodes[2])]);
     }
     return norm(p - q);
 }
