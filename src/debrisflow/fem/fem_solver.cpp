@@ -535,29 +535,4 @@ long FemSolver::eroded_elements() const {
     return n;
 }
 
-Real FemSolver::kinetic_energy() const {
-    Real k = 0;
-    for (std::size_t i = 0; i < v_.size(); ++i) k += Real(0.5) * mass_[i] * dot(v_[i], v_[i]);
-    return k;
-}
-
-Real FemSolver::strain_energy() const {
-    // W = 1/2 sum_e (1 - D) u_e^T K_e u_e = -1/2 sum of element forces . nodal displacements
-    // (small rotations).
-    Real w = 0;
-    const int dim = params_.dim;
-    for (const auto& s : solids_) {
-        const int nn = nodes_of(s.type), ndof = nn * dim;
-        for (std::size_t e = 0; e < s.volume.size(); ++e)
-            for (int a = 0; a < nn; ++a) {
-                const std::size_t n = std::size_t(s.conn[e * std::size_t(nn) + std::size_t(a)]);
-                const Vec3 u = x_[n] - X_[n];
-                for (int i = 0; i < dim; ++i)
-                    w -= Real(0.5) * s.force[e * std::size_t(ndof) + std::size_t(a * dim + i)] *
-                         u[world_axis(dim, i)];
-            }
-    }
-    return w;
-}
-
 } // namespace debrisflow::fem

@@ -116,8 +116,6 @@ public:
     Eigen::MatrixXd assemble_stiffness() const;
     Eigen::VectorXd dof_masses() const;
     long eroded_elements() const;
-    Real kinetic_energy() const;
-    Real strain_energy() const;
 
 private:
     void internal_forces(bool update_damage);

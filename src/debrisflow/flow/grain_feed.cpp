@@ -10,10 +10,7 @@ constexpr Real pi = 3.14159265358979323846;
 }
 
 GrainFeed::GrainFeed(const io::FeedSpec& spec, const io::CaseSpec& c)
-    : spec_(spec), case_(c), q_{spec.times, spec.discharge}, sizes_(spec.size, c.dim, spec.seed),
-      material_(scenario::material_index(c, spec.material)) {
-    next_d_ = sizes_();
-}
+    : SolidFeed(spec, c), material_(scenario::material_index(c, spec.material)) {}
 
 Real GrainFeed::volume_of(Real d) const {
     const Real r = d / 2;
@@ -21,7 +18,7 @@ Real GrainFeed::volume_of(Real d) const {
 }
 
 void GrainFeed::apply(dem::DemSolver& dem, Real t, Real dt) {
-    owed_ += q_.at(t) * dt;
+    accrue(t, dt);
     if (owed_ < volume_of(next_d_)) return;
     auto& g = dem.grains();
     const Index before = g.size();
@@ -63,11 +60,7 @@ void GrainFeed::apply(dem::DemSolver& dem, Real t, Real dt) {
             placed = true;
         }
         if (!placed) break; // region full: the debt waits for the next step
-        owed_ -= volume_of(next_d_);
-        volume_in_ += volume_of(next_d_);
-        mass_in_ += g.mass.back();
-        ++count_;
-        next_d_ = sizes_();
+        released(volume_of(next_d_), g.mass.back());
     }
     if (g.size() > before) dem.grains_added(before);
 }

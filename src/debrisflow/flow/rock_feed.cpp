@@ -47,9 +47,11 @@ Real sphericity(const scenario::TriangleMesh& mesh) {
 }
 
 RockFeed::RockFeed(const io::FeedSpec& spec, const io::CaseSpec& c)
-    : spec_(spec), case_(c), q_{spec.times, spec.discharge}, sizes_(spec.size, c.dim, spec.seed) {
-    const int mat = scenario::material_index(c, spec.material);
-    density_ = c.dem.materials[std::size_t(mat)].density;
+    : SolidFeed(spec, c), material_(scenario::material_index(c, spec.material)),
+      density_(c.dem.materials[std::size_t(material_)].density),
+      layers_(spec.layers > 0 ? spec.layers
+                              : int(std::ceil(2 * c.sph.h / (c.dp > 0 ? c.dp : 1) - 1e-9))),
+      sph_dp_(c.fluids.empty() ? 0 : c.dp) {
     for (const auto& file : spec.rocks) {
         const auto raw = scenario::TriangleMesh::read_stl(file, 1, {});
         Vec3 ctr;
@@ -64,7 +66,6 @@ RockFeed::RockFeed(const io::FeedSpec& spec, const io::CaseSpec& c)
         s.sphericity = sphericity(s.mesh);
         shapes_.push_back(std::move(s));
     }
-    next_d_ = sizes_();
 }
 
 scenario::TriangleMesh RockFeed::make_rock(Real d, Real& ratio) {
@@ -101,7 +102,7 @@ scenario::TriangleMesh RockFeed::make_rock(Real d, Real& ratio) {
 
 void RockFeed::apply(rigid::BodySolver& bodies, const dem::GrainSet* grains,
                      const particles::ParticleSet* fluid, Real t, Real dt) {
-    owed_ += q_.at(t) * dt;
+    accrue(t, dt);
     auto volume_of = [](Real d) { return pi * d * d * d / 6; };
     if (owed_ < volume_of(next_d_)) return;
     // Grains and SPH particles near the region (possible overlaps), gathered once per batch.
@@ -123,14 +124,9 @@ void RockFeed::apply(rigid::BodySolver& bodies, const dem::GrainSet* grains,
         }
     std::uniform_real_distribution<Real> u(0, 1);
     auto& rng = sizes_.rng();
-    const int layers = spec_.layers > 0
-                           ? spec_.layers
-                           : int(std::ceil(2 * case_.sph.h / (case_.dp > 0 ? case_.dp : 1) - 1e-9));
-    const Real sph_dp = case_.fluids.empty() ? 0 : case_.dp;
-    const int material = scenario::material_index(case_, spec_.material);
     constexpr int tries_per_rock = 200;
     while (owed_ >= volume_of(next_d_)) {
-        Real ratio;
+        Real ratio, mass = 0;
         const scenario::TriangleMesh rock = make_rock(next_d_, ratio);
         Real r = 0;
         for (const auto& tri : rock.triangles)
@@ -162,22 +158,18 @@ void RockFeed::apply(rigid::BodySolver& bodies, const dem::GrainSet* grains,
             spec.velocity = spec_.velocity;
             spec.density = density_;
             const auto placed_mesh = transformed(rock, [&](Vec3 x) { return x + p; });
-            auto built = scenario::build_body(spec, case_, density_, sph_dp, layers, &placed_mesh);
-            built.state.material = material;
+            auto built =
+                scenario::build_body(spec, case_, density_, sph_dp_, layers_, &placed_mesh);
+            built.state.material = material_;
             std::vector<rigid::ShellPoint> shell;
             for (const auto& sp : built.sph_points) shell.push_back({sp.p, sp.n, sp.depth});
             const Real m_particle = case_.sph.rho0 * std::pow(case_.dp, Real(case_.dim));
-            mass_in_ += built.state.mass;
+            mass = built.state.mass;
             bodies.add_body(built.state, std::move(built.model), shell, case_.sph.rho0, m_particle);
             placed = true;
         }
         if (!placed) break; // region full: the debt waits for the next step
-        owed_ -= volume_of(next_d_);
-        volume_in_ += volume_of(next_d_);
-        ratio_min_ = std::min(ratio_min_, ratio);
-        ratio_max_ = std::max(ratio_max_, ratio);
-        ++count_;
-        next_d_ = sizes_();
+        released(volume_of(next_d_), mass);
     }
 }
 

@@ -1,10 +1,7 @@
 #pragma once
 #include "debrisflow/dem/grain_set.hpp"
-#include "debrisflow/flow/hydrograph.hpp"
 #include "debrisflow/flow/solid_feed.hpp"
-#include "debrisflow/io/case_spec.hpp"
 #include "debrisflow/particles/particle_set.hpp"
-#include "debrisflow/scenario/size_sampler.hpp"
 #include "debrisflow/scenario/stl_mesh.hpp"
 
 namespace debrisflow::rigid {
@@ -31,17 +28,8 @@ public:
     void apply(rigid::BodySolver& bodies, const dem::GrainSet* grains,
                const particles::ParticleSet* fluid, Real t, Real dt);
 
-    const std::string& name() const override { return spec_.name; }
-    Real discharge(Real t) const override { return q_.at(t); }
-    Real volume_in() const override { return volume_in_; }
-    Real mass_in() const override { return mass_in_; }
-    Real owed() const override { return owed_; }
-    long pieces_in() const override { return count_; }
-    // Sphericity of library shape k, and the extremes of the rocks released (ratio to their
-    // shape's sphericity).
+    // Sphericity of library shape k.
     Real shape_sphericity(std::size_t k) const { return shapes_[k].sphericity; }
-    Real ratio_min() const { return ratio_min_; }
-    Real ratio_max() const { return ratio_max_; }
 
     // A rock of equivalent diameter d centred at the origin: a library shape, stretched
     // within the sphericity bound and turned at random. Returns the mesh; `ratio` receives its
@@ -54,16 +42,11 @@ private:
         Real sphericity;
     };
 
-    io::FeedSpec spec_;
-    const io::CaseSpec& case_;
-    Hydrograph q_;
-    scenario::SizeSampler sizes_;
     std::vector<Shape> shapes_;
+    int material_;
     Real density_;
-    Real next_d_;
-    Real owed_ = 0, volume_in_ = 0, mass_in_ = 0;
-    Real ratio_min_ = 1, ratio_max_ = 1;
-    long count_ = 0;
+    int layers_;  // SPH boundary layers of each rock
+    Real sph_dp_; // 0 without a fluid (no SPH shell)
 };
 
 } // namespace debrisflow::flow

@@ -1,20 +1,46 @@
 #pragma once
-#include "debrisflow/core/real.hpp"
+#include "debrisflow/flow/hydrograph.hpp"
+#include "debrisflow/io/case_spec.hpp"
+#include "debrisflow/scenario/size_sampler.hpp"
 #include <string>
 
 namespace debrisflow::flow {
 
-// What every solid feed (grains or rigid rocks) reports: the target solid discharge Q_s(t),
-// what it has released and what it still owes (a growing debt: the region is full, choked).
+// What every solid feed (grains or rigid rocks) shares: the target solid discharge Q_s(t), the
+// solid volume owed (grows by Q_s dt each step, paid by each piece placed), the size of the next
+// piece, and what has been released. A growing debt means the region is full: the feed is choked.
 class SolidFeed {
 public:
-    virtual ~SolidFeed() = default;
-    virtual const std::string& name() const = 0;
-    virtual Real discharge(Real t) const = 0; // target [m^3/s of solid]
-    virtual Real volume_in() const = 0;       // solid volume released [m^3]
-    virtual Real mass_in() const = 0;         // [kg]
-    virtual Real owed() const = 0;            // solid volume not yet placed [m^3]
-    virtual long pieces_in() const = 0;       // grains or rocks released
+    SolidFeed(const io::FeedSpec& spec, const io::CaseSpec& c)
+        : spec_(spec), case_(c), q_{spec.times, spec.discharge},
+          sizes_(spec.size, c.dim, spec.seed), next_d_(sizes_()) {}
+
+    const std::string& name() const { return spec_.name; }
+    Real discharge(Real t) const { return q_.at(t); } // target [m^3/s of solid]
+    Real volume_in() const { return volume_in_; }     // solid volume released [m^3]
+    Real mass_in() const { return mass_in_; }         // [kg]
+    Real owed() const { return owed_; }               // solid volume not yet placed [m^3]
+    long pieces_in() const { return count_; }         // grains or rocks released
+
+protected:
+    // Adds Q_s(t) dt to the debt.
+    void accrue(Real t, Real dt) { owed_ += q_.at(t) * dt; }
+    // Books a piece of `volume` and `mass` as released and draws the next size.
+    void released(Real volume, Real mass) {
+        owed_ -= volume;
+        volume_in_ += volume;
+        mass_in_ += mass;
+        ++count_;
+        next_d_ = sizes_();
+    }
+
+    io::FeedSpec spec_;
+    const io::CaseSpec& case_;
+    Hydrograph q_;
+    scenario::SizeSampler sizes_;
+    Real next_d_; // diameter of the next piece [m]
+    Real owed_ = 0, volume_in_ = 0, mass_in_ = 0;
+    long count_ = 0;
 };
 
 } // namespace debrisflow::flow

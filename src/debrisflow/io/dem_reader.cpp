@@ -172,16 +172,12 @@ FeedSpec read_feed(const ConfigTable& t, const CaseSpec& c) {
     f.seed = unsigned(t.integer("seed", 1));
     f.every = t.positive("every", 0.01);
     if (t.has("rocks")) {
-        if (c.dim != 2) {
-            for (const auto& name : t.strings("rocks")) {
-                std::filesystem::path p(name);
-                if (p.is_relative()) p = std::filesystem::path(t.file()).parent_path() / p;
-                if (!std::filesystem::exists(p))
-                    t.fail("rocks", "mesh file not found: " + p.string());
-                f.rocks.push_back(p.string());
-            }
-        } else {
-            t.fail("rocks", "rock feeds (STL shapes) need dimensions = 3");
+        if (c.dim == 2) t.fail("rocks", "rock feeds (STL shapes) need dimensions = 3");
+        for (const auto& name : t.strings("rocks")) {
+            std::filesystem::path p(name);
+            if (p.is_relative()) p = std::filesystem::path(t.file()).parent_path() / p;
+            if (!std::filesystem::exists(p)) t.fail("rocks", "mesh file not found: " + p.string());
+            f.rocks.push_back(p.string());
         }
         if (f.rocks.empty()) t.fail("rocks", "list at least one STL shape");
         f.sphericity_tolerance = t.real("sphericity_tolerance", Real(0.15));
