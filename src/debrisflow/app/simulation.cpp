@@ -37,6 +37,7 @@ Simulation::Simulation(io::CaseSpec spec) : spec_(std::move(spec)) {
         solver_ = std::make_unique<sph::SphSolver>(spec_.sph, set_, spec_.domain);
     }
     if (spec_.has_dem || spec_.has_bodies()) scenario::build_dem_walls(spec_, dem_walls_);
+    if (fem_ && (spec_.has_dem || spec_.has_bodies())) couple_fem_to_contacts();
     if (spec_.has_bodies())
         rigid_ = scenario::make_body_solver(spec_, bodies, &dem_walls_, solver_ ? &set_ : nullptr,
                                             first_body_particle);
@@ -88,6 +89,28 @@ Simulation::Simulation(io::CaseSpec spec) : spec_(std::move(spec)) {
         probes_.push_back(
             std::make_unique<probes::OutletProbe>(*outlets_.back(), out.every, spec_.dim == 2));
     }
+}
+
+void Simulation::couple_fem_to_contacts() {
+    std::vector<int> materials;
+    for (const auto& s : spec_.fem.solids)
+        materials.push_back(
+            s.dem_material.empty() ? -1 : scenario::material_index(spec_, s.dem_material));
+    dem_fem_ = std::make_unique<coupling::DemFemCoupling>(*fem_, dem_walls_, materials);
+    fem_->add_step_source([this](std::vector<Vec3>& f, Real dt) {
+        dem_fem_->collect_grain_forces(f, dt);
+        fem_->report_interface_force("grains", dem_fem_->last_grain_force());
+    });
+    fem_->add_load_source([this](std::vector<Vec3>& f) {
+        if (!rigid_) return;
+        coupling::DemFemCoupling::add_body_forces(rigid_->node_forces(), f);
+        Vec3 total{};
+        for (const Vec3& v : rigid_->node_forces()) total += v;
+        fem_->report_interface_force("bodies", total);
+    });
+    fem_->add_surface_mover([this](Real ahead) {
+        if (ahead == 0) dem_fem_->sync();
+    });
 }
 
 probes::Probe& Simulation::probe(const std::string& name) {

@@ -1,5 +1,6 @@
 #pragma once
 #include "debrisflow/core/log.hpp"
+#include "debrisflow/coupling/dem_fem.hpp"
 #include "debrisflow/coupling/sph_fem.hpp"
 #include "debrisflow/dem/dem_solver.hpp"
 #include "debrisflow/fem/fem_solver.hpp"
@@ -53,6 +54,8 @@ public:
     std::size_t memory_bytes() const;
 
 private:
+    // Grains and bodies touch the solids' surface triangles (DEM-FEM contact).
+    void couple_fem_to_contacts();
     // Runs the DEM alone, gates closed, until PFC's equilibrium ratio (mean unbalanced force /
     // mean contact force) drops below dem.settle_ratio; then zeroes grain velocities.
     void settle_grains();
@@ -72,6 +75,7 @@ private:
     std::unique_ptr<rigid::BodySolver> rigid_;
     std::unique_ptr<fem::FemSolver> fem_;
     std::unique_ptr<coupling::SphFemCoupling> sph_fem_; // with a fluid
+    std::unique_ptr<coupling::DemFemCoupling> dem_fem_; // with grains or bodies
     dem::ObstacleSet obstacles_;                        // grain-body contact link
     bool settled_ = false;
     std::vector<std::unique_ptr<flow::FluidInlet>> inlets_;

@@ -50,7 +50,16 @@ void DemSolver::update_neighbors(bool) {
 }
 
 void DemSolver::compute_forces() {
-    if (!built_) rebuild();
+    // The step just taken ended with a force evaluation that the grains were kicked with and
+    // that bodies and FEM nodes received as impulse: evaluating again (with walls or bodies
+    // moved since) would hand the grains a force nobody else felt. Only a changed grain set
+    // or wall layout needs a new evaluation.
+    if (evaluated_ && walls_.layout() == walls_seen_) {
+        evaluated_ = false;
+        return;
+    }
+    evaluated_ = false;
+    if (!built_ || walls_.layout() != walls_seen_) rebuild();
     ScopedTimer timer(t_forces_);
     forces(0);
 }
@@ -60,6 +69,7 @@ void DemSolver::rebuild() {
     const Index n = grains_.size();
     built_ = true;
     drift_ = 0;
+    walls_seen_ = walls_.layout();
     ++builds_;
     if (n == 0) return;
     configure_grid();
@@ -192,7 +202,10 @@ void DemSolver::forces(Real half_kick) {
     ContactHistory* gh = grain_slots_.history();
     long touching = 0;
     Real fsum = 0;
-    const Real h_contact = current_h_;
+    // Only the evaluation that ends a step advances the tangential springs and hands impulses
+    // to bodies and FEM nodes; a re-evaluation of the same state (compute_forces) must not.
+    const bool ends_step = half_kick > 0;
+    const Real h_contact = ends_step ? current_h_ : 0;
     const GrainState* hot = hot_.data();
 #pragma omp parallel reduction(+ : touching, fsum) if (n > parallel_min)
     {
@@ -244,6 +257,13 @@ void DemSolver::forces(Real half_kick) {
     ContactHistory* wh = wall_slots_.history();
     const Vec3 grav = params_.gravity;
     const bool plane = params_.dim == 2;
+    // nodal (deforming) triangles: corner nodes, their velocities and reaction impulses
+    const auto& corners = walls_.corners();
+    auto& moving = walls_.nodes();
+    if (moving.impulse.size() != moving.x.size()) moving.impulse.assign(moving.x.size(), Vec3{});
+    const Vec3* node_v = moving.v.data();
+    Vec3* node_j = ends_step ? moving.impulse.data() : nullptr;
+    const Real current_h = current_h_;
     const Real half = half_kick;
     // grain-obstacle (rigid body) contacts
     const std::size_t nb = obstacles_ ? obstacles_->body_com.size() : 0;
@@ -290,15 +310,37 @@ void DemSolver::forces(Real half_kick) {
                 for (int c = 0; c < cand.size; ++c) {
                     const Index k = cand.slot[c];
                     const WallPrimitive& pr = prims[std::size_t(wp[base + std::size_t(k)])];
-                    if (cand.covered(c, prims, wp + base, si.r)) {
+                    if (cand.covered(c, prims, wp + base, si.r, si.x)) {
                         wh[base + std::size_t(k)] = ContactHistory{};
                         continue;
                     }
                     const std::size_t w = std::size_t(pr.wall);
                     const int mw = wl[w].material < 0 ? si.material : wl[w].material;
+                    // A triangle on moving nodes moves with the barycentric blend of its
+                    // corners' velocities and hands the reaction back with the same weights.
+                    Vec3 vw = wl[w].velocity, bw{};
+                    const NodalCorners* nc = nullptr;
+                    if (pr.corners >= 0) {
+                        nc = &corners[std::size_t(pr.corners)];
+                        bw = barycentric(cand.q[c], pr.a, pr.b, pr.c);
+                        vw = bw.x * node_v[nc->node[0]] + bw.y * node_v[nc->node[1]] +
+                             bw.z * node_v[nc->node[2]];
+                    }
                     const WallContactForce c2 =
-                        wall_contact_force(table(si.material, mw), si, pr, cand.q[c], cand.d[c],
-                                           wl[w].velocity, h_contact, wh[base + std::size_t(k)]);
+                        wall_contact_force(table(si.material, mw), si, pr, cand.q[c], cand.d[c], vw,
+                                           h_contact, wh[base + std::size_t(k)]);
+                    if (nc && node_j) {
+                        for (int a = 0; a < 3; ++a) {
+                            Vec3& J = node_j[nc->node[std::size_t(a)]];
+                            const Vec3 dj = (-current_h * bw[a]) * c2.force;
+#pragma omp atomic
+                            J.x += dj.x;
+#pragma omp atomic
+                            J.y += dj.y;
+#pragma omp atomic
+                            J.z += dj.z;
+                        }
+                    }
                     f += c2.force;
                     t += c2.torque;
                     const Vec3 m = cross(cand.q[c] - wl[w].origin, -c2.force) - c2.mroll;
@@ -350,7 +392,7 @@ void DemSolver::forces(Real half_kick) {
             for (std::size_t k = 0; k < obody.size(); ++k) body_sum[k] += obody[k];
         }
     }
-    if (obstacles_ && current_h_ > 0) {
+    if (obstacles_ && ends_step) {
         auto& o = *obstacles_;
         o.impulse.resize(nb);
         o.angular_impulse.resize(nb);
@@ -378,13 +420,14 @@ void DemSolver::step(Real h) {
         w.impulse += h * w.force; // force of the previous evaluation, held over the step
         w.impulse_time += h;
     }
-    if (drift_ > Real(0.5) * skin_) rebuild();
+    if (drift_ > Real(0.5) * skin_ || walls_.layout() != walls_seen_) rebuild();
     if (obstacles_ && (obstacles_->version != obstacles_seen_ || builds_ != obstacle_builds_seen_))
         build_obstacle_slots();
     {
         ScopedTimer timer(t_forces_);
         forces(Real(0.5) * h);
     }
+    evaluated_ = true;
 }
 
 void DemSolver::build_obstacle_slots() {
@@ -437,11 +480,13 @@ void DemSolver::advance(Real dt) {
 }
 
 void DemSolver::remove_wall(int wall) {
+    evaluated_ = false;
     walls_.walls()[std::size_t(wall)].active = false;
     walls_.walls()[std::size_t(wall)].force = {};
 }
 
 void DemSolver::remove_grains(const std::vector<std::uint8_t>& keep) {
+    evaluated_ = false;
     std::vector<Index> kept;
     for (Index i = 0; i < grains_.size(); ++i)
         if (keep[std::size_t(i)]) kept.push_back(i);
@@ -453,6 +498,7 @@ void DemSolver::remove_grains(const std::vector<std::uint8_t>& keep) {
 }
 
 void DemSolver::grains_added(Index old_count) {
+    evaluated_ = false;
     std::vector<Index> from(std::size_t(grains_.size()), -1);
     for (Index i = 0; i < old_count; ++i) from[std::size_t(i)] = i;
     for (auto* slots : {&grain_slots_, &wall_slots_, &obstacle_slots_}) slots->remap(from);
@@ -486,6 +532,7 @@ void DemSolver::include_sizes(const GrainSet& prototypes) {
 }
 
 void DemSolver::stop_grains() {
+    evaluated_ = false;
     for (auto* v : {&grains_.vel, &grains_.spin}) std::fill(v->begin(), v->end(), Vec3{});
     refresh_hot();
 }

@@ -95,6 +95,7 @@ private:
     ContactSlots grain_slots_, wall_slots_, obstacle_slots_;
     ObstacleSet* obstacles_ = nullptr;
     std::uint64_t obstacles_seen_ = ~std::uint64_t(0);
+    std::uint64_t walls_seen_ = ~std::uint64_t(0); // WallSet::layout() of the last rebuild
     long obstacle_builds_seen_ = -1;
     std::vector<std::vector<Real>> buffers_;
     // Interleaved copy of the state the contact loop reads (one 96-byte record per grain
@@ -104,6 +105,7 @@ private:
     Real current_h_ = 0; // size of the step being taken (tangential spring increment)
     time::DtLimit auto_dt_{0, ""}, stability_dt_{0, ""};
     bool built_ = false, bad_ = false;
+    bool evaluated_ = false; // the last step's closing force evaluation is still current
     long contacts_ = 0, builds_ = 0;
     Real sum_contact_force_ = 0;
     double t_neighbors_ = 0, t_forces_ = 0, t_integration_ = 0;

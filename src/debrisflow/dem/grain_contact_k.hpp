@@ -85,14 +85,20 @@ struct WallCandidates {
             }
     }
     // Whether candidate c's contact point lies on a closer, accepted triangle of the same wall;
-    // marks c accepted otherwise.
+    // marks c accepted otherwise. On a deforming (nodal) surface the facets around a contact
+    // are no longer coplanar: a candidate of the same nodal wall whose normal is within ~25
+    // degrees of an accepted one (grain centre x) is the same contact of one smooth surface.
     template <class Prims>
-    DF_HD bool covered(int c, const Prims& prims, const Index* partners, Real r) {
+    DF_HD bool covered(int c, const Prims& prims, const Index* partners, Real r, Vec3 x) {
         const WallPrimitive& pc = prims[std::size_t(partners[slot[c]])];
         for (int a = 0; a < c; ++a) {
             if (!accepted[a]) continue;
             const WallPrimitive& pa = prims[std::size_t(partners[slot[a]])];
-            if (pa.wall == pc.wall && lies_on_triangle(pa, q[c], Real(1e-6) * r)) return true;
+            if (pa.wall != pc.wall) continue;
+            if (lies_on_triangle(pa, q[c], Real(1e-6) * r)) return true;
+            if (pa.corners >= 0 && pc.corners >= 0 &&
+                dot(x - q[a], x - q[c]) > Real(0.9) * d[a] * d[c])
+                return true;
         }
         accepted[c] = true;
         return false;

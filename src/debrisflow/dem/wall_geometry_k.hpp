@@ -13,7 +13,8 @@ enum class PrimitiveType : std::uint8_t { plane = 0, triangle = 1 };
 struct WallPrimitive {
     Vec3 a, b, c, n;
     PrimitiveType type;
-    std::int16_t wall; // index of the named wall it belongs to
+    std::int16_t wall;         // index of the named wall it belongs to
+    std::int32_t corners = -1; // row of WallSet::corners() for a triangle on moving nodes
 };
 static_assert(std::is_trivially_copyable_v<WallPrimitive>);
 
@@ -37,6 +38,25 @@ DF_HD inline Vec3 closest_on_triangle(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
         return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
     const Real denom = 1 / (va + vb + vc);
     return a + (vb * denom) * ab + (vc * denom) * ac;
+}
+
+// Barycentric weights of q (a point of triangle abc) in a, b, c, clamped to [0, 1] and summing
+// to 1 (Ericson 2005, 3.4): the split of a contact force onto the corners.
+DF_HD inline Vec3 barycentric(Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
+    const Vec3 v0 = b - a, v1 = c - a, v2 = q - a;
+    const Real d00 = dot(v0, v0), d01 = dot(v0, v1), d11 = dot(v1, v1);
+    const Real d20 = dot(v2, v0), d21 = dot(v2, v1);
+    const Real den = d00 * d11 - d01 * d01;
+    if (!(den > 0)) return {Real(1) / 3, Real(1) / 3, Real(1) / 3};
+    Real v = (d11 * d20 - d01 * d21) / den, w = (d00 * d21 - d01 * d20) / den;
+    v = v < 0 ? 0 : (v > 1 ? 1 : v);
+    w = w < 0 ? 0 : (w > 1 ? 1 : w);
+    Real u = 1 - v - w;
+    if (u < 0) {
+        const Real s = v + w;
+        v /= s, w /= s, u = 0;
+    }
+    return {u, v, w};
 }
 
 // Contact point of a sphere centre p with a primitive: returns the point on the primitive

@@ -1,5 +1,7 @@
 #pragma once
 #include "debrisflow/dem/wall_geometry_k.hpp"
+#include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,13 +22,40 @@ struct Wall {
     Real impulse_time = 0;
 };
 
+// Corner k of a triangle that follows moving nodes (a deforming FEM surface) sits at
+// node[k] + offset[k] (the offset extrudes a 2D edge across the y = 0 plane).
+struct NodalCorners {
+    std::array<std::int32_t, 3> node;
+    std::array<Vec3, 3> offset;
+};
+
+// The moving nodes under nodal triangles: positions and velocities set by the owner (the
+// DEM-FEM coupling) and drifted with the walls; the grains' reaction impulse on each node
+// (split by the barycentric weights of the contact point) accumulates until collected.
+struct MovingNodes {
+    std::vector<Vec3> x, v;
+    std::vector<Vec3> impulse; // [N s] since the last collection
+};
+
 class WallSet {
 public:
     int add(Wall w, std::vector<WallPrimitive> prims);
-    // Moves every moving wall by velocity * dt.
+    // Adds a wall of triangles whose corners follow the moving nodes; returns its index.
+    int add_nodal(Wall w, const std::vector<NodalCorners>& triangles);
+    // Replaces the triangles of nodal wall `wall` (eroded elements left the surface). The
+    // primitive list changes: the DEM must rebuild its wall contact lists.
+    void replace_nodal(int wall, const std::vector<NodalCorners>& triangles);
+    // Recomputes every nodal triangle from the moving nodes' positions.
+    void place_nodal();
+    // Moves every moving wall by velocity * dt (nodal triangles: their nodes by v * dt).
     void advance(Real dt);
-    // Largest wall speed (for the neighbour skin).
+    // Largest wall or node speed (for the neighbour skin).
     Real max_speed() const;
+    MovingNodes& nodes() { return nodes_; }
+    const MovingNodes& nodes() const { return nodes_; }
+    const std::vector<NodalCorners>& corners() const { return corners_; }
+    // Bumped when primitives are added or replaced.
+    std::uint64_t layout() const { return layout_; }
 
     std::vector<Wall>& walls() { return walls_; }
     const std::vector<Wall>& walls() const { return walls_; }
@@ -37,6 +66,9 @@ public:
 private:
     std::vector<Wall> walls_;
     std::vector<WallPrimitive> prims_;
+    std::vector<NodalCorners> corners_;
+    MovingNodes nodes_;
+    std::uint64_t layout_ = 0;
 };
 
 } // namespace debrisflow::dem

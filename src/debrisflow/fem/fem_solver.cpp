@@ -363,7 +363,8 @@ void FemSolver::accelerations() {
         for (auto i : l.nodes) load[std::size_t(i)] = load[std::size_t(i)] + s * l.force;
     }
     for (std::size_t i = 0; i < n; ++i) {
-        Vec3 a = (1 / mass_[i]) * (f_int_[i] + f_ext_[i] + load[i]) + params_.gravity -
+        const Vec3 f_step = f_step_.empty() ? Vec3{} : f_step_[i];
+        Vec3 a = (1 / mass_[i]) * (f_int_[i] + f_ext_[i] + f_step + load[i]) + params_.gravity -
                  params_.alpha * v_[i];
         if (params_.dim == 2) a.y = 0;
         for (int k = 0; k < 3; ++k)
@@ -398,6 +399,10 @@ void FemSolver::add_surface_mover(std::function<void(Real)> mover) {
     movers_.push_back(std::move(mover));
 }
 
+void FemSolver::add_step_source(std::function<void(std::vector<Vec3>&, Real)> source) {
+    step_sources_.push_back(std::move(source));
+}
+
 void FemSolver::compute_forces() {
     if (sources_.empty()) return;
     if (!initialized_) initialize();
@@ -421,6 +426,8 @@ void FemSolver::verlet_step(Real dt, bool) {
 
 void FemSolver::advance(Real dt) {
     if (!initialized_) initialize();
+    f_step_.assign(x_.size(), Vec3{});
+    for (auto& s : step_sources_) s(f_step_, dt);
     accelerations(); // external loads may have changed since the last step
     const long n = std::max(1L, long(std::ceil(dt / critical_dt_ - 1e-9)));
     const Real h = dt / Real(n);

@@ -60,6 +60,10 @@ public:
     // places coupled particles from the nodes, `ahead` seconds extrapolated along the velocity.
     void add_load_source(std::function<void(std::vector<Vec3>&)> source);
     void add_surface_mover(std::function<void(Real ahead)> mover);
+    // A step source adds, at the start of every advance(dt), the nodal forces [N] that are
+    // held over that advance: impulses gathered during the step divided by dt (the grains),
+    // so that exactly the impulse the grains received reaches the nodes.
+    void add_step_source(std::function<void(std::vector<Vec3>& f, Real dt)> source);
     // Total load a coupling put on the solids at its last evaluation [N] ("fluid", "grains").
     void report_interface_force(const std::string& source, Vec3 f) { interface_[source] = f; }
     Vec3 interface_force(const std::string& source) const {
@@ -132,6 +136,8 @@ private:
     std::vector<FemLoad> loads_;
     std::vector<std::function<void(std::vector<Vec3>&)>> sources_;
     std::vector<std::function<void(Real)>> movers_;
+    std::vector<std::function<void(std::vector<Vec3>&, Real)>> step_sources_;
+    std::vector<Vec3> f_step_;
     std::map<std::string, Vec3> interface_;
     // node -> (solid, element, local node) incidences (CSR) for the force gather
     std::vector<std::int32_t> inc_start_;

@@ -194,6 +194,7 @@ struct OutletSpec {
 // sets fixed in all directions.
 struct FemSolidSpec {
     std::string name, material, mesh = "box", element = "hex8", file;
+    std::string dem_material; // DEM material grains and bodies meet on its surface ("": theirs)
     Vec3 min, max;
     std::array<int, 3> divisions{4, 4, 4};
     fem::TrapezoidSpec trapezoid;

@@ -72,6 +72,13 @@ FemSolidSpec read_solid(const ConfigTable& t, const CaseSpec& c) {
         s.file = p.string();
     }
     if (t.has("fixed")) s.fixed = t.strings("fixed");
+    if (t.has("dem_material")) {
+        s.dem_material = t.string("dem_material");
+        const auto& dm = c.dem.materials;
+        if (std::none_of(dm.begin(), dm.end(),
+                         [&](const auto& m) { return m.name == s.dem_material; }))
+            t.fail("dem_material", "no DEM [[material]] named \"" + s.dem_material + "\"");
+    }
     t.finish();
     return s;
 }

@@ -1,6 +1,7 @@
 #include "debrisflow/probes/fem_probes.hpp"
 #include "debrisflow/fem/fem_solver.hpp"
 #include <cmath>
+#include <fmt/format.h>
 #include <limits>
 
 namespace debrisflow::probes {
@@ -37,13 +38,23 @@ FemForceProbe::FemForceProbe(const io::ProbeSpec& s, const io::CaseSpec& c)
     : Probe(s.name, s.every), unit_(c.dim == 2 ? "N/m" : "N") {}
 
 std::vector<std::string> FemForceProbe::columns() const {
-    return {"Fx_fluid [" + unit_ + "]", "Fy_fluid [" + unit_ + "]", "Fz_fluid [" + unit_ + "]",
-            "F_fluid [" + unit_ + "]"};
+    std::vector<std::string> c;
+    for (const char* src : {"fluid", "grains", "bodies", "total"})
+        for (const char* comp : {"Fx", "Fy", "Fz", "F"})
+            c.push_back(fmt::format("{}_{} [{}]", comp, src, unit_));
+    return c;
 }
 
 std::vector<Real> FemForceProbe::sample(Real, const ProbeContext& ctx) {
-    const Vec3 f = ctx.fem->interface_force("fluid");
-    return {f.x, f.y, f.z, norm(f)};
+    std::vector<Real> out;
+    Vec3 total{};
+    for (const char* src : {"fluid", "grains", "bodies"}) {
+        const Vec3 f = ctx.fem->interface_force(src);
+        total += f;
+        out.insert(out.end(), {f.x, f.y, f.z, norm(f)});
+    }
+    out.insert(out.end(), {total.x, total.y, total.z, norm(total)});
+    return out;
 }
 
 } // namespace debrisflow::probes

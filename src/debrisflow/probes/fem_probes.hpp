@@ -18,8 +18,8 @@ private:
     std::vector<std::int32_t> nodes_; // resolved at the first sample
 };
 
-// probes/<name>.csv: total interface load on the solids by source (fluid; grains once coupled)
-// [N] (2D: N/m).
+// probes/<name>.csv: total interface load on the solids by source (fluid, grains, bodies) and
+// their sum [N] (2D: N/m); the grains' load is their mean over the step (impulse / dt).
 class FemForceProbe : public Probe {
 public:
     FemForceProbe(const io::ProbeSpec& s, const io::CaseSpec& c);

@@ -80,6 +80,7 @@ Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<Bo
     std::unordered_map<std::uint64_t, dem::ContactHistory> wall_next, body_next;
     // Body-wall: vertices and exact spheres against every active primitive.
     wall_force_.assign(walls ? walls->walls().size() : 0, Vec3{});
+    node_force_.assign(walls ? walls->nodes().x.size() : 0, Vec3{});
     if (walls && !walls->empty()) {
         const auto& prims = walls->primitives();
         const auto& wl = walls->walls();
@@ -94,9 +95,10 @@ Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<Bo
                                              : model.spheres[f - model.vertices.size()];
                 const Vec3 p = b.to_world(sp.center);
                 const Real reach = std::max(b.contact_radius, sp.radius);
-                // deepest hit per wall
-                std::vector<std::tuple<int, Hit>> best;
-                for (const auto& w : prims) {
+                // deepest hit per wall (and the primitive it is on)
+                std::vector<std::tuple<int, Hit, std::size_t>> best;
+                for (std::size_t pi = 0; pi < prims.size(); ++pi) {
+                    const auto& w = prims[pi];
                     if (!wl[w.wall].active) continue;
                     Vec3 n;
                     Real gap;
@@ -118,21 +120,38 @@ Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<Bo
                     auto it = std::find_if(best.begin(), best.end(),
                                            [&](const auto& e) { return std::get<0>(e) == w.wall; });
                     if (it == best.end())
-                        best.emplace_back(w.wall, h);
+                        best.emplace_back(w.wall, h, pi);
                     else if (delta > std::get<1>(*it).delta)
-                        std::get<1>(*it) = h;
+                        *it = {w.wall, h, pi};
                 }
-                for (const auto& [wall, h] : best) {
+                for (const auto& [wall, h, pi] : best) {
                     const int wm = wl[wall].material >= 0 ? wl[wall].material : b.material;
                     const auto k = key(bi, f, std::uint64_t(wall));
                     auto it = wall_hist_.find(k);
                     dem::ContactHistory hist =
                         it != wall_hist_.end() ? it->second : dem::ContactHistory{};
                     const Vec3 before = loads[bi].contact_force;
-                    add(pair(b.material, wm), h, b, nullptr, wl[wall].velocity,
+                    // A triangle on moving nodes (FEM surface): blended corner velocity, and
+                    // the reaction split onto the corners with the same weights.
+                    const auto& pr = prims[pi];
+                    Vec3 vw = wl[wall].velocity, bw{};
+                    if (pr.corners >= 0) {
+                        const auto& nc = walls->corners()[std::size_t(pr.corners)];
+                        const auto& nv = walls->nodes().v;
+                        bw = dem::barycentric(dem::closest_point(pr, h.point), pr.a, pr.b, pr.c);
+                        vw = {};
+                        for (int a = 0; a < 3; ++a) vw += bw[a] * nv[std::size_t(nc.node[a])];
+                    }
+                    add(pair(b.material, wm), h, b, nullptr, vw,
                         vertex ? b.contact_radius : sp.radius, b.mass, loads[bi], nullptr, hist,
                         elapsed);
-                    wall_force_[std::size_t(wall)] -= loads[bi].contact_force - before;
+                    const Vec3 reaction = before - loads[bi].contact_force;
+                    wall_force_[std::size_t(wall)] += reaction;
+                    if (pr.corners >= 0) {
+                        const auto& nc = walls->corners()[std::size_t(pr.corners)];
+                        for (int a = 0; a < 3; ++a)
+                            node_force_[std::size_t(nc.node[a])] += bw[a] * reaction;
+                    }
                     wall_next[k] = hist;
                 }
             }

@@ -34,6 +34,8 @@ public:
     Real imminent_dt() const { return imminent_dt_; }
     // Force of the bodies on each geometric wall in the last evaluation [N].
     const std::vector<Vec3>& wall_forces() const { return wall_force_; }
+    // Force of the bodies on each moving node of nodal walls (dem::WallSet::nodes()) [N].
+    const std::vector<Vec3>& node_forces() const { return node_force_; }
 
 private:
     struct Hit {
@@ -51,7 +53,7 @@ private:
     long contacts_ = 0;
     Real max_rate_ = 0;
     Real imminent_dt_ = 0;
-    std::vector<Vec3> wall_force_;
+    std::vector<Vec3> wall_force_, node_force_;
 };
 
 } // namespace debrisflow::rigid
