@@ -93,6 +93,11 @@ public:
     // External nodal forces (coupling), held over the next advance [N].
     std::vector<Vec3>& external_forces() { return f_ext_; }
     Vec3 displacement(std::size_t n) const { return x_[n] - X_[n]; }
+    // Load of the couplings on node n over the last advance: fluid and bodies (load sources)
+    // plus grains (step sources) [N].
+    Vec3 coupling_force(std::size_t n) const {
+        return f_ext_[n] + (f_step_.empty() ? Vec3{} : f_step_[n]);
+    }
     // Node set by name "<solid>.<set>"; throws InputError when absent.
     const std::vector<std::int32_t>& node_set(const std::string& name) const;
     bool has_node_set(const std::string& name) const;

@@ -158,7 +158,7 @@ ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
     p.type = t.choice("type", {"pressure", "gauge", "velocity", "front", "wall_force", "section",
                                "kinetic_energy", "runup", "mass_flux", "body", "discharge",
                                "trapping", "deposit", "flow_section", "fluid_runup", "pressure_map",
-                               "fem_displacement", "fem_force"});
+                               "fem_displacement", "fem_force", "fem_face_load"});
     p.every = t.positive("every", 0.001);
     const bool fluid_probe = p.type == "pressure" || p.type == "velocity" || p.type == "gauge" ||
                              p.type == "front" || p.type == "flow_section" ||
@@ -169,6 +169,20 @@ ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
     if (grain_probe && !c.has_dem) t.fail("type", "a " + p.type + " probe needs [[grains]]");
     if (p.type == "fem_force") {
         if (!c.has_fem()) t.fail("type", "a fem_force probe needs a [[solid]]");
+    } else if (p.type == "fem_face_load") {
+        if (!c.has_fem()) t.fail("type", "a fem_face_load probe needs a [[solid]]");
+        p.set = t.string("set");
+        const auto dot = p.set.find('.');
+        if (dot == std::string::npos ||
+            std::none_of(c.fem.solids.begin(), c.fem.solids.end(),
+                         [&](const auto& s) { return s.name == p.set.substr(0, dot); }))
+            t.fail("set", "needs \"<solid>.<set>\" naming a [[solid]] (e.g. \"dam.upstream\")");
+        p.normal = t.vec3("normal", c.dim);
+        if (!(norm(p.normal) > 0)) t.fail("normal", "must be a non-zero vector");
+        const std::string axis = t.choice("axis", {"x", "y", "z"}, "z");
+        p.axis = axis == "x" ? 0 : axis == "y" ? 1 : 2;
+        p.panels_u = int(t.integer("bins", 5));
+        if (p.panels_u < 1 || p.panels_u > 100) t.fail("bins", "must be within 1..100");
     } else if (p.type == "fem_displacement") {
         if (!c.has_fem()) t.fail("type", "a fem_displacement probe needs a [[solid]]");
         if (t.has("set")) {

@@ -30,4 +30,22 @@ private:
     std::string unit_;
 };
 
+// probes/<name>.csv: distribution of the coupling load (fluid + grains + bodies) over a face:
+// the component along `normal` summed over the nodes of `set` in `bins` equal bands of their
+// reference coordinate along `axis` (e.g. the upstream face of a dam by height) [N] (2D: N/m),
+// and the total.
+class FemFaceLoadProbe : public Probe {
+public:
+    FemFaceLoadProbe(const io::ProbeSpec& s, const io::CaseSpec& c);
+    std::vector<std::string> columns() const override;
+    std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
+
+private:
+    std::string set_, unit_;
+    Vec3 normal_;
+    int axis_, bins_;
+    std::vector<Real> edges_;               // bin edges, resolved at the first sample
+    std::vector<std::int32_t> nodes_, bin_; // set nodes and their bins
+};
+
 } // namespace debrisflow::probes

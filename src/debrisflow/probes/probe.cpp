@@ -68,6 +68,7 @@ std::unique_ptr<Probe> make_probe(const io::ProbeSpec& s, const io::CaseSpec& c)
     if (s.type == "body") return std::make_unique<BodyProbe>(s, c);
     if (s.type == "fem_displacement") return std::make_unique<FemDisplacementProbe>(s, c);
     if (s.type == "fem_force") return std::make_unique<FemForceProbe>(s, c);
+    if (s.type == "fem_face_load") return std::make_unique<FemFaceLoadProbe>(s, c);
     if (s.type == "discharge") return std::make_unique<DischargeProbe>(s, c);
     if (s.type == "trapping") return std::make_unique<TrappingProbe>(s, c);
     if (s.type == "deposit") return std::make_unique<DepositProbe>(s, c);

@@ -1,0 +1,122 @@
+#!/usr/bin/python3
+"""Retaining-dam case (section D of ../shared/reference/seed_experiments.md): peaks of the
+crest mid-point displacement and of the debris impact force for the dam-groove slopes, beside
+the paper's numbers and Kwan's formula, and a figure of the histories.
+
+Usage: tools/retaining_dam_report.py RUN_20 RUN_30 RUN_40 RUN_50 [--png docs/img/x.png]
+(each RUN a `debrisflow run cases/papers/retaining_dam.toml --set structure.0.slope_deg=B`
+output directory; a missing one is skipped). Prints a Markdown table.
+
+Kwan's formula (Kwan 2012, GEO Report 270): F = kappa rho v^2 h w sin(beta) with
+kappa = 2.5, w the gully width, rho the debris bulk density (slurry + rocks over the slurry
+volume), and v, h the largest approach-flow momentum flux rho v^2 h seen by the `approach`
+probe before the front reaches the dam.
+"""
+import argparse
+import csv
+import math
+import os
+
+PAPER = {  # slope: (crest peak mm, peak force kN, Kwan kN) from seed_experiments.md section D
+    20: (None, 3032, 3618),
+    30: (2.75, 5626, 6452),
+    40: (3.55, 6917, 7728),
+    50: (5.61, 9124, 9896),
+}
+WIDTH = 6.0  # gully width [m] (cases/papers/retaining_dam.toml)
+KAPPA = 2.5
+
+
+def read(path):
+    with open(path) as f:
+        rows = list(csv.reader(f))
+    head = rows[0]
+    cols = {h: [float(r[i]) for r in rows[1:]] for i, h in enumerate(head)}
+    return cols
+
+
+def slope_of(run):
+    with open(os.path.join(run, "case.toml")) as f:
+        text = f.read()
+    for line in text.splitlines():
+        if line.strip().startswith("slope_deg"):
+            return float(line.split("=")[1].split("#")[0])
+    raise SystemExit(f"{run}: no slope_deg in case.toml")
+
+
+def bulk_density():
+    """Slurry (96 m^3 at 1000 kg/m^3) plus 300 rocks of 0.3 m at 2650 kg/m^3, over 96 m^3."""
+    return 1000.0 + 300 * 2650 * math.pi / 6 * 0.3 ** 3 / 96.0
+
+
+def analyse(run):
+    beta = slope_of(run)
+    load = read(os.path.join(run, "probes", "dam_load.csv"))
+    crest = read(os.path.join(run, "probes", "crest.csv"))
+    appr = read(os.path.join(run, "probes", "approach.csv"))
+    t = load["time [s]"]
+    fx = load["Fx_total [N]"]
+    fg = load["Fx_grains [N]"]
+    ff = load["Fx_fluid [N]"]
+    # arrival: first time the debris load exceeds 1 kN
+    arrive = next((ti for ti, f in zip(t, fx) if abs(f) > 1e3), None)
+    k = max(range(len(fx)), key=lambda i: fx[i])
+    # crest displacement relative to the self-weight state just before arrival
+    tc, ux = crest["time [s]"], crest["ux [m]"]
+    base = ux[max(i for i, ti in enumerate(tc) if arrive is None or ti <= arrive)]
+    du = [u - base for u in ux]
+    kc = max(range(len(du)), key=lambda i: abs(du[i]))
+    rho = bulk_density()
+    flux = [(rho * v * v * h, v, h, fr) for ti, v, h, fr in
+            zip(appr["time [s]"], appr["v [m/s]"], appr["h [m]"], appr["Fr [-]"])
+            if arrive is None or ti <= arrive + 0.2]
+    best = max(flux) if flux else (0, 0, 0, 0)
+    kwan = KAPPA * best[0] * WIDTH * math.sin(math.radians(beta))
+    return dict(beta=beta, t=t, fx=fx, fg=fg, ff=ff, tc=tc, du=du, arrive=arrive,
+                f_peak=fx[k], t_peak=t[k], fg_peak=max(fg), ff_peak=max(ff),
+                u_peak=du[kc], t_u=tc[kc], v=best[1], h=best[2], fr=best[3], kwan=kwan)
+
+
+def pct(a, b):
+    return f"{100 * (a / b - 1):+.0f} %" if b else "–"
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("runs", nargs="+")
+    ap.add_argument("--png")
+    a = ap.parse_args()
+    res = [analyse(r) for r in a.runs if os.path.exists(os.path.join(r, "probes", "dam_load.csv"))]
+    print("| groove slope | arrival [s] | peak force [kN] (t [s]) | fluid / grains peaks [kN] | "
+          "paper [kN] | diff. | Kwan (ours: v, h) [kN] | Kwan (paper) [kN] | crest peak [mm] "
+          "(t [s]) | paper [mm] |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    for r in sorted(res, key=lambda r: r["beta"]):
+        p = PAPER.get(int(round(r["beta"])), (None, None, None))
+        print(f"| {r['beta']:.0f}° | {r['arrive'] if r['arrive'] is None else round(r['arrive'], 2)} "
+              f"| {r['f_peak'] / 1e3:.0f} ({r['t_peak']:.2f}) | {r['ff_peak'] / 1e3:.0f} / "
+              f"{r['fg_peak'] / 1e3:.0f} | {p[1]} | {pct(r['f_peak'] / 1e3, p[1])} | "
+              f"{r['kwan'] / 1e3:.0f} (v {r['v']:.1f} m/s, h {r['h']:.2f} m) | {p[2]} | "
+              f"{1e3 * r['u_peak']:.3f} ({r['t_u']:.2f}) | {p[0] if p[0] else '–'} |")
+    if a.png and res:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(1, 2, figsize=(11, 4))
+        for r in sorted(res, key=lambda r: r["beta"]):
+            ax[0].plot(r["t"], [f / 1e3 for f in r["fx"]], label=f"{r['beta']:.0f}°")
+            ax[1].plot(r["tc"], [1e3 * u for u in r["du"]], label=f"{r['beta']:.0f}°")
+        ax[0].set_xlabel("time [s]")
+        ax[0].set_ylabel("impact force normal to the dam [kN]")
+        ax[1].set_xlabel("time [s]")
+        ax[1].set_ylabel("crest mid-point displacement [mm]")
+        for x in ax:
+            x.legend(title="groove slope")
+            x.grid(alpha=0.3)
+        fig.tight_layout()
+        fig.savefig(a.png, dpi=110)
+        print(f"\nfigure: {a.png}")
+
+
+if __name__ == "__main__":
+    main()
