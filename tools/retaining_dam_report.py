@@ -65,7 +65,8 @@ def analyse(run):
     tc, ux = crest["time [s]"], crest["ux [m]"]
     base = ux[max(i for i, ti in enumerate(tc) if arrive is None or ti <= arrive)]
     du = [u - base for u in ux]
-    kc = max(range(len(du)), key=lambda i: abs(du[i]))
+    after = [i for i, ti in enumerate(tc) if arrive is not None and ti >= arrive] or [0]
+    kc = max(after, key=lambda i: abs(du[i]))
     rho = bulk_density()
     flux = [(rho * v * v * h, v, h, fr) for ti, v, h, fr in
             zip(appr["time [s]"], appr["v [m/s]"], appr["h [m]"], appr["Fr [-]"])
