@@ -54,14 +54,19 @@ void DemSolver::compute_forces() {
     // that bodies and FEM nodes received as impulse: evaluating again (with walls or bodies
     // moved since) would hand the grains a force nobody else felt. Only a changed grain set
     // or wall layout needs a new evaluation.
-    if (evaluated_ && walls_.layout() == walls_seen_) {
+    // Bodies moved their contact spheres after the step: the grains' next half-kick needs the
+    // force at the spheres' new place (their impulse bookkeeping is per evaluation time).
+    const bool bodies_moved = obstacles_ && obstacles_->version != obstacles_seen_;
+    if (evaluated_ && !bodies_moved && walls_.layout() == walls_seen_) {
         evaluated_ = false;
         return;
     }
     evaluated_ = false;
     if (!built_ || walls_.layout() != walls_seen_) rebuild();
     ScopedTimer timer(t_forces_);
-    forces(0);
+    // After bodies moved, the bodies also take this evaluation's reaction (averaged with the
+    // step's over the time both cover), as the grains feel it in their next half-kick.
+    forces(0, bodies_moved);
 }
 
 void DemSolver::rebuild() {
@@ -188,7 +193,7 @@ void DemSolver::kick_drift(Real h) {
     drift_ += h * (std::sqrt(vmax2) + walls_.max_speed());
 }
 
-void DemSolver::forces(Real half_kick) {
+void DemSolver::forces(Real half_kick, bool collect_obstacles) {
     const Index n = grains_.size();
     GrainView g = grains_.view();
     const PairTable table{table_.data(), int(materials_.size())};
@@ -392,7 +397,7 @@ void DemSolver::forces(Real half_kick) {
             for (std::size_t k = 0; k < obody.size(); ++k) body_sum[k] += obody[k];
         }
     }
-    if (obstacles_ && ends_step) {
+    if (obstacles_ && (ends_step || collect_obstacles) && current_h_ > 0) {
         auto& o = *obstacles_;
         o.impulse.resize(nb);
         o.angular_impulse.resize(nb);

@@ -81,7 +81,7 @@ private:
     // Copies positions, velocities, spins, radii, masses and materials into hot_.
     void refresh_hot();
     void kick_drift(Real h);
-    void forces(Real half_kick);
+    void forces(Real half_kick, bool collect_obstacles = false);
     // Candidate grain-obstacle pairs within reach (rebuilt when either side moved).
     void build_obstacle_slots();
 
