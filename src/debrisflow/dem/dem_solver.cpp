@@ -51,11 +51,10 @@ void DemSolver::update_neighbors(bool) {
 
 void DemSolver::compute_forces() {
     // The step just taken ended with a force evaluation that the grains were kicked with and
-    // that bodies and FEM nodes received as impulse: evaluating again (with walls or bodies
-    // moved since) would hand the grains a force nobody else felt. Only a changed grain set
-    // or wall layout needs a new evaluation.
-    // Bodies moved their contact spheres after the step: the grains' next half-kick needs the
-    // force at the spheres' new place (their impulse bookkeeping is per evaluation time).
+    // that the FEM nodes received as impulse; evaluating the same state again would hand the
+    // grains a force nobody else felt. Evaluate again only for a new wall layout or when bodies
+    // moved their contact spheres after the step (then the bodies take this reaction too,
+    // averaged with the step's over the time both cover).
     const bool bodies_moved = obstacles_ && obstacles_->version != obstacles_seen_;
     if (evaluated_ && !bodies_moved && walls_.layout() == walls_seen_) {
         evaluated_ = false;
@@ -64,8 +63,6 @@ void DemSolver::compute_forces() {
     evaluated_ = false;
     if (!built_ || walls_.layout() != walls_seen_) rebuild();
     ScopedTimer timer(t_forces_);
-    // After bodies moved, the bodies also take this evaluation's reaction (averaged with the
-    // step's over the time both cover), as the grains feel it in their next half-kick.
     forces(0, bodies_moved);
 }
 
@@ -328,8 +325,7 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
                     if (pr.corners >= 0) {
                         nc = &corners[std::size_t(pr.corners)];
                         bw = barycentric(cand.q[c], pr.a, pr.b, pr.c);
-                        vw = bw.x * node_v[nc->node[0]] + bw.y * node_v[nc->node[1]] +
-                             bw.z * node_v[nc->node[2]];
+                        vw = blend(*nc, node_v, bw);
                     }
                     const WallContactForce c2 =
                         wall_contact_force(table(si.material, mw), si, pr, cand.q[c], cand.d[c], vw,

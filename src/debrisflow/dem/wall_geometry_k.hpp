@@ -1,6 +1,7 @@
 #pragma once
 #include "debrisflow/core/hd.hpp"
 #include "debrisflow/core/vec3_k.hpp"
+#include <array>
 #include <cstdint>
 #include <type_traits>
 
@@ -57,6 +58,18 @@ DF_HD inline Vec3 barycentric(Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
         v /= s, w /= s, u = 0;
     }
     return {u, v, w};
+}
+
+// Corner k of a triangle that follows moving nodes (a deforming FEM surface) sits at
+// node[k] + offset[k] (the offset extrudes a 2D edge across the y = 0 plane).
+struct NodalCorners {
+    std::array<std::int32_t, 3> node;
+    std::array<Vec3, 3> offset;
+};
+
+// Velocity of a point of a nodal triangle with barycentric weights w: sum_k w_k v[node_k].
+DF_HD inline Vec3 blend(const NodalCorners& c, const Vec3* v, Vec3 w) {
+    return w.x * v[c.node[0]] + w.y * v[c.node[1]] + w.z * v[c.node[2]];
 }
 
 // Contact point of a sphere centre p with a primitive: returns the point on the primitive

@@ -22,13 +22,6 @@ struct Wall {
     Real impulse_time = 0;
 };
 
-// Corner k of a triangle that follows moving nodes (a deforming FEM surface) sits at
-// node[k] + offset[k] (the offset extrudes a 2D edge across the y = 0 plane).
-struct NodalCorners {
-    std::array<std::int32_t, 3> node;
-    std::array<Vec3, 3> offset;
-};
-
 // The moving nodes under nodal triangles: positions and velocities set by the owner (the
 // DEM-FEM coupling) and drifted with the walls; the grains' reaction impulse on each node
 // (split by the barycentric weights of the contact point) accumulates until collected.

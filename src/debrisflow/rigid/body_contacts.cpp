@@ -137,10 +137,8 @@ Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<Bo
                     Vec3 vw = wl[wall].velocity, bw{};
                     if (pr.corners >= 0) {
                         const auto& nc = walls->corners()[std::size_t(pr.corners)];
-                        const auto& nv = walls->nodes().v;
                         bw = dem::barycentric(dem::closest_point(pr, h.point), pr.a, pr.b, pr.c);
-                        vw = {};
-                        for (int a = 0; a < 3; ++a) vw += bw[a] * nv[std::size_t(nc.node[a])];
+                        vw = dem::blend(nc, walls->nodes().v.data(), bw);
                     }
                     add(pair(b.material, wm), h, b, nullptr, vw,
                         vertex ? b.contact_radius : sp.radius, b.mass, loads[bi], nullptr, hist,
