@@ -1,21 +1,19 @@
 #!/usr/bin/python3
 """Retaining-dam case (section D of ../shared/reference/seed_experiments.md): peaks of the
 crest mid-point displacement and of the debris impact force for the dam-groove slopes, beside
-the paper's numbers and Kwan's formula, and a figure of the histories.
-
-Usage: tools/retaining_dam_report.py RUN_20 RUN_30 RUN_40 RUN_50 [--png docs/img/x.png]
-(each RUN a `debrisflow run cases/papers/retaining_dam.toml --set structure.0.slope_deg=B`
-output directory; a missing one is skipped). Prints a Markdown table.
+the paper's numbers and Kwan's formula, and a figure of the histories. Runs are named
+D_dam<slope> (`debrisflow run cases/papers/retaining_dam.toml --set structure.0.slope_deg=B`).
 
 Kwan's formula (Kwan 2012, GEO Report 270): F = kappa rho v^2 h w sin(beta) with
 kappa = 2.5, w the gully width, rho the debris bulk density (slurry + rocks over the slurry
 volume), and v, h the largest approach-flow momentum flux rho v^2 h seen by the `approach`
 probe before the front reaches the dam.
 """
-import argparse
-import csv
+import glob
 import math
 import os
+
+from common import pct, read_probe, table, wall_seconds
 
 PAPER = {  # slope: (crest peak mm, peak force kN, Kwan kN) from seed_experiments.md section D
     20: (None, 3032, 3618),
@@ -25,14 +23,6 @@ PAPER = {  # slope: (crest peak mm, peak force kN, Kwan kN) from seed_experiment
 }
 WIDTH = 6.0  # gully width [m] (cases/papers/retaining_dam.toml)
 KAPPA = 2.5
-
-
-def read(path):
-    with open(path) as f:
-        rows = list(csv.reader(f))
-    head = rows[0]
-    cols = {h: [float(r[i]) for r in rows[1:]] for i, h in enumerate(head)}
-    return cols
 
 
 def slope_of(run):
@@ -51,9 +41,9 @@ def bulk_density():
 
 def analyse(run):
     beta = slope_of(run)
-    load = read(os.path.join(run, "probes", "dam_load.csv"))
-    crest = read(os.path.join(run, "probes", "crest.csv"))
-    appr = read(os.path.join(run, "probes", "approach.csv"))
+    load = {k: list(v) for k, v in read_probe(run, "dam_load").items()}
+    crest = {k: list(v) for k, v in read_probe(run, "crest").items()}
+    appr = {k: list(v) for k, v in read_probe(run, "approach").items()}
     t = load["time [s]"]
     fx = load["Fx_total [N]"]
     fg = load["Fx_grains [N]"]
@@ -78,33 +68,32 @@ def analyse(run):
                 u_peak=du[kc], t_u=tc[kc], v=best[1], h=best[2], fr=best[3], kwan=kwan)
 
 
-def pct(a, b):
-    return f"{100 * (a / b - 1):+.0f} %" if b else "–"
-
-
-def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("runs", nargs="+")
-    ap.add_argument("--png")
-    a = ap.parse_args()
-    res = [analyse(r) for r in a.runs if os.path.exists(os.path.join(r, "probes", "dam_load.csv"))]
-    print("| groove slope | arrival [s] | peak force [kN] (t [s]) | fluid / grains peaks [kN] | "
-          "paper [kN] | diff. | Kwan (ours: v, h) [kN] | Kwan (paper) [kN] | crest peak [mm] "
-          "(t [s]) | paper [mm] |")
-    print("|---|---|---|---|---|---|---|---|---|---|")
-    for r in sorted(res, key=lambda r: r["beta"]):
+def report(root, figures):
+    lines = ["### Retaining dam (section D)", ""]
+    runs = sorted(glob.glob(os.path.join(root, "D_dam*")))
+    res = [(r, analyse(r)) for r in runs if os.path.exists(os.path.join(r, "probes", "dam_load.csv"))]
+    rows = []
+    for run, r in sorted(res, key=lambda x: x[1]["beta"]):
         p = PAPER.get(int(round(r["beta"])), (None, None, None))
-        print(f"| {r['beta']:.0f}° | {r['arrive'] if r['arrive'] is None else round(r['arrive'], 2)} "
-              f"| {r['f_peak'] / 1e3:.0f} ({r['t_peak']:.2f}) | {r['ff_peak'] / 1e3:.0f} / "
-              f"{r['fg_peak'] / 1e3:.0f} | {p[1]} | {pct(r['f_peak'] / 1e3, p[1])} | "
-              f"{r['kwan'] / 1e3:.0f} (v {r['v']:.1f} m/s, h {r['h']:.2f} m) | {p[2]} | "
-              f"{1e3 * r['u_peak']:.3f} ({r['t_u']:.2f}) | {p[0] if p[0] else '–'} |")
-    if a.png and res:
+        rows.append([f"{r['beta']:.0f}°", f"{wall_seconds(run):.0f} s ({r['t'][-1]:.1f} s)",
+                     "–" if r["arrive"] is None else f"{r['arrive']:.2f} (2.1)",
+                     f"{r['f_peak'] / 1e3:.0f} at {r['t_peak']:.2f} s",
+                     f"{r['ff_peak'] / 1e3:.0f} / {r['fg_peak'] / 1e3:.0f}", p[1],
+                     pct(r["f_peak"] / 1e3, p[1]),
+                     f"{r['kwan'] / 1e3:.0f} (v {r['v']:.1f} m/s, h {r['h']:.2f} m)", p[2],
+                     f"{1e3 * r['u_peak']:.4f} at {r['t_u']:.2f} s", p[0] if p[0] else "–"])
+    lines += ["Peak load normal to the dam (fluid + rocks), Kwan's formula from our approach flow "
+              "(κ = 2.5), crest mid-point displacement after arrival; the paper's numbers beside:", ""]
+    lines += table(["groove slope", "wall (simulated)", "arrival [s] (paper)", "peak force [kN]",
+                    "fluid / rocks peaks [kN]", "paper [kN]", "diff.", "Kwan, ours [kN]",
+                    "Kwan, paper [kN]", "crest peak [mm]", "paper [mm]"], rows)
+    lines.append("")
+    if figures and res:
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
         fig, ax = plt.subplots(1, 2, figsize=(11, 4))
-        for r in sorted(res, key=lambda r: r["beta"]):
+        for _, r in sorted(res, key=lambda x: x[1]["beta"]):
             ax[0].plot(r["t"], [f / 1e3 for f in r["fx"]], label=f"{r['beta']:.0f}°")
             ax[1].plot(r["tc"], [1e3 * u for u in r["du"]], label=f"{r['beta']:.0f}°")
         ax[0].set_xlabel("time [s]")
@@ -115,9 +104,7 @@ def main():
             x.legend(title="groove slope")
             x.grid(alpha=0.3)
         fig.tight_layout()
-        fig.savefig(a.png, dpi=110)
-        print(f"\nfigure: {a.png}")
-
-
-if __name__ == "__main__":
-    main()
+        path = os.path.join(figures, "retaining_dam.png")
+        fig.savefig(path, dpi=110)
+        lines += [f"![retaining dam](img/{os.path.basename(path)})", ""]
+    return lines

@@ -1,0 +1,136 @@
+"""Section E of ../shared/reference/seed_experiments.md: mono-disperse granular flow down a flume
+at 10 and 30 degrees, free (section at 1.0-1.1 m) and against a rigid barrier at 1.2 m.
+Runs are named E_<free|barrier><slope>_<2d|3d>_d<mm> (tools/papers/run_reduced.sh)."""
+import glob
+import math
+import os
+import re
+
+import numpy as np
+
+from common import column, grain_mass, pct, read_probe, status, table, wall_seconds
+
+# test (slope, d mm): v, h, delta/h, shear rate, Fr, Savage (paper's free-flow table)
+PAPER_FREE = {
+    (10, 3): (0.19, 0.013, 0.23, 14.80, 4.86, 0.05),
+    (10, 10): (0.54, 0.018, 0.55, 29.31, 3.71, 1.60),
+    (10, 23): (1.01, 0.034, 0.68, 29.62, 3.07, 6.78),
+    (10, 38): (1.44, 0.050, 0.76, 28.85, 2.49, 11.82),
+    (30, 3): (2.37, 0.020, 0.15, 117.61, 7.99, 1.96),
+    (30, 10): (2.38, 0.024, 0.43, 101.13, 7.15, 14.90),
+    (30, 23): (2.51, 0.045, 0.51, 56.09, 4.60, 18.45),
+    (30, 38): (2.53, 0.062, 0.62, 41.15, 3.75, 19.57),
+}
+# peak dynamic / static barrier load, read off the paper's text by delta/h (same order as d)
+PAPER_RATIO = {(10, 3): 4, (10, 10): 5, (10, 23): 10, (10, 38): 14,
+               (30, 3): 9, (30, 10): 11, (30, 23): 13, (30, 38): 15}
+BULK = {3: 1620, 10: 1611, 23: 1583, 38: 1510}  # initial bulk density [kg/m3]
+RHO_S = 2550.0
+NAME = re.compile(r"E_(free|barrier)(\d+)_(2d|3d)_d(\d+)$")
+
+
+def runs(root):
+    out = []
+    for path in sorted(glob.glob(os.path.join(root, "E_*"))):
+        m = NAME.search(path)
+        if m and os.path.isdir(path):
+            out.append((m.group(1), int(m.group(2)), m.group(3), int(m.group(4)), path))
+    return out
+
+
+def surge(run, slope, d):
+    """Means over the surge body (samples with h >= h_max / 2) at the section."""
+    s = read_probe(run, "section")
+    if not s or column(s, "h ").max() <= 0:
+        return None
+    t, h, v = s["time [s]"], column(s, "h "), column(s, "v ")
+    body = h >= 0.5 * h.max()
+    out = dict(v=v[body].mean(), h=h[body].mean(), Fr=column(s, "Fr")[body].mean(),
+               Savage=column(s, "N_savage")[body].mean(), t0=t[body].min(), t1=t[body].max())
+    if "h_solid [m]" in s or "col7" in s:
+        hs = s.get("h_solid [m]", s.get("col7"))
+        hd = hs[body] / (BULK[d] / RHO_S)  # dense depth at the paper's bulk density
+        cos_t = math.cos(math.radians(slope))
+        out["h_dense"] = hd.mean()
+        out["Fr_dense"] = (v[body] / np.sqrt(9.81 * np.maximum(hd, 1e-9) * cos_t)).mean()
+    return out
+
+
+def barrier(run):
+    """Peak of the 1 ms impulse-averaged barrier load and the static load (mean of the last
+    10 % of the record)."""
+    b = read_probe(run, "barrier_force")
+    if not b:
+        return None
+    t, f = b["time [s]"], column(b, "Fn_avg")
+    k = int(np.argmax(f))
+    tail = f[int(0.9 * len(f)):]
+    return dict(t=t, f=f, peak=f[k], t_peak=t[k], static=tail.mean(), end=t[-1])
+
+
+def report(root, figures):
+    lines = ["### Granular flow against a rigid barrier (section E)", ""]
+    found = runs(root)
+    if not found:
+        return lines + ["(no runs)", ""]
+    free = [r for r in found if r[0] == "free"]
+    rows = []
+    for _, slope, dim, d, run in sorted(free, key=lambda r: (r[2], r[1], r[3])):
+        p = PAPER_FREE.get((slope, d))
+        s = surge(run, slope, d)
+        n, m = grain_mass(run)
+        if s is None:
+            rows.append([f"F{slope}-{d}", dim, f"{n} / {m:.1f} kg", status(run)] + ["–"] * 8)
+            continue
+        rows.append([f"F{slope}-{d}", dim, f"{n} / {m:.1f} kg", f"{wall_seconds(run):.0f} s",
+                     f"{s['v']:.2f} ({p[0]}, {pct(s['v'], p[0])})",
+                     f"{s['h']:.3f} ({p[1]})", f"{s.get('h_dense', float('nan')):.3f} ({pct(s.get('h_dense'), p[1])})",
+                     f"{d / 1000 / s['h']:.2f} ({p[2]})",
+                     f"{s['v'] / s['h']:.0f} ({p[3]:.0f})",
+                     f"{s['Fr']:.2f} ({p[4]})", f"{s.get('Fr_dense', float('nan')):.2f}",
+                     f"{s['Savage']:.2f} ({p[5]})"])
+    lines += ["Free flow, section 1.0–1.1 m downstream of the gate, means over the surge body "
+              "(h ≥ h_max/2); paper's value in brackets:", ""]
+    lines += table(["test", "dim", "grains / mass", "wall", "v [m/s]", "h top [m]",
+                    "h dense [m]", "δ/h", "γ̇ [1/s]", "Fr", "Fr dense", "Savage"], rows)
+    lines.append("")
+    bars = [r for r in found if r[0] == "barrier"]
+    rows = []
+    curves = {}
+    for _, slope, dim, d, run in sorted(bars, key=lambda r: (r[2], r[1], r[3])):
+        b = barrier(run)
+        n, m = grain_mass(run)
+        ref = PAPER_RATIO.get((slope, d))
+        if b is None:
+            rows.append([f"B{slope}-{d}", dim, f"{n} / {m:.1f} kg", status(run), "–", "–", "–", ref])
+            continue
+        ratio = b["peak"] / b["static"] if b["static"] > 0 else float("nan")
+        wsin = m * 9.81 * math.sin(math.radians(slope))
+        rows.append([f"B{slope}-{d}", dim, f"{n} / {m:.1f} kg",
+                     f"{wall_seconds(run):.0f} s ({b['end']:.2f} s)",
+                     f"{b['peak']:.1f} at {b['t_peak']:.3f} s", f"{b['static']:.1f} ({b['static'] / wsin:.2f} W sinθ)",
+                     f"{ratio:.1f}", f"{ref} ({pct(ratio, ref)})"])
+        curves[(dim, slope, d)] = b
+    lines += ["Barrier load, impulse average over 1 ms (`Fn_avg`); static = mean of the last "
+              "10 % of the run; W sinθ = the released weight along the slope:", ""]
+    lines += table(["test", "dim", "grains / mass", "wall (simulated)", "peak [N]", "static [N]",
+                    "peak / static", "paper"], rows)
+    lines.append("")
+    if figures and curves:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(1, 2, figsize=(11, 4))
+        for (dim, slope, d), b in sorted(curves.items()):
+            a = ax[0 if slope == 10 else 1]
+            ls = "-" if dim == "2d" else "--"
+            a.plot(b["t"], b["f"], ls, lw=0.9, label=f"{dim} d = {d} mm")
+        for a, s in zip(ax, (10, 30)):
+            a.set(xlabel="t [s]", ylabel="barrier load, 1 ms average [N]", title=f"{s}° barrier")
+            a.legend(fontsize=8)
+            a.grid(alpha=0.3)
+        fig.tight_layout()
+        path = os.path.join(figures, "granular_barrier_force.png")
+        fig.savefig(path, dpi=110)
+        lines += [f"![barrier load](img/{os.path.basename(path)})", ""]
+    return lines

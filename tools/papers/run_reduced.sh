@@ -1,0 +1,71 @@
+#!/bin/bash
+# Runs the reduced variants of the paper cases (cases/papers/, docs/validation.md "Paper
+# reproductions") into runs/papers/<run>, JOBS runs at a time with one thread each (default 2),
+# skipping runs whose summary.json says they completed. Then regenerate the report with
+#   /usr/bin/python3 tools/papers/report.py runs/papers --figures docs/img
+# Usage: tools/papers/run_reduced.sh [flume|slit|baffles|check|container|dam ...]  (default all)
+set -u
+cd "$(dirname "$0")/../.."
+OUT=${OUT:-runs/papers}
+JOBS=${JOBS:-2}
+BIN=${BIN:-build/debrisflow}
+mkdir -p "$OUT"
+SOFT="--set material.0.kn=1e6 --set material.0.kt=1e6 --set material.1.kn=1e6 --set material.1.kt=1e6"
+P=cases/papers
+
+list() {
+  case "$1" in
+  flume) # section E: 2D discs, all sizes (3 mm with contacts softened to 1e6 N/m: cost); 3D 38 mm
+    for s in 10 30; do
+      for k in free barrier; do
+        echo "E_${k}${s}_2d_d3 $P/granular_flume/${k}${s}_2d.toml --set grains.0.diameter=0.003 $SOFT"
+        for d in 10 23 38; do
+          echo "E_${k}${s}_2d_d$d $P/granular_flume/${k}${s}_2d.toml --set grains.0.diameter=0.0$d"
+        done
+        echo "E_${k}${s}_3d_d38 $P/granular_flume/${k}${s}_3d.toml --set grains.0.diameter=0.038"
+      done
+    done
+    ;;
+  slit) # section B, two-level DEM: Type A SD5 (the paper's 12,393 grains), Type B with SD5 fines
+    echo "B_slitA_sd5 $P/slit_dam_dem/typeA.toml"
+    for n in 4 16 32; do
+      echo "B_slitB_sd5_${n}b $P/slit_dam_dem/typeB.toml --set grains.0.diameter=0.01 --set grains.0.count=12393 --set grains.1.count=$n"
+    done
+    ;;
+  baffles) # section B, SPH-DEM: slurry viscosity 0.1, 1, 5 m2/s
+    for nu in 0.1 1 5; do
+      echo "B_baffles_nu$nu $P/baffles_boulders.toml --set sph.nu=$nu"
+    done
+    ;;
+  check) # section A: trapping efficiency for s/d95 = 1.18, 1.36, 1.49 (reduced slice)
+    for s in 0.093:1.18 0.107:1.36 0.118:1.49; do
+      echo "A_check_s${s#*:} $P/slit_check_dam_reduced.toml --set structure.1.slit_width=${s%:*}"
+    done
+    ;;
+  container) # section C: 2D slice at the paper's dp
+    echo "C_container2d $P/container_dambreak2d_reduced.toml"
+    ;;
+  dam) # section D: the four dam-groove slopes
+    for b in 20 30 40 50; do
+      echo "D_dam$b $P/retaining_dam.toml --set structure.0.slope_deg=$b"
+    done
+    ;;
+  esac
+}
+
+one() { # NAME CASE ARGS...
+  local name=$1 case=$2
+  shift 2
+  if grep -q '"status": "completed"' "$OUT/$name/summary.json" 2>/dev/null; then
+    echo "skip $name (done)"
+    return
+  fi
+  local t0=$SECONDS
+  "$BIN" run "$case" --out "$OUT/$name" --threads 1 "$@" >"$OUT/$name.log" 2>&1
+  echo "$name: exit $? after $((SECONDS - t0)) s"
+}
+export -f one
+export OUT BIN
+
+sections=${*:-flume slit baffles check container dam}
+for s in $sections; do list "$s"; done | xargs -P "$JOBS" -L 1 bash -c 'one "$@"' _

@@ -1,0 +1,87 @@
+"""Section B of ../shared/reference/seed_experiments.md, two-level DEM slit dam (one 5 cm slit,
+30 degree flume): discharge through the slit for Type A (fine grains only) and Type B (fine
+grains + 4 cm boulders). Runs are named B_slitA_sd<n> and B_slitB_sd<n>_<k>b."""
+import glob
+import os
+import re
+
+import numpy as np
+
+from common import column, grain_mass, read_probe, status, table, wall_seconds
+from vtk_series import frames, read_vtu
+
+PEAK_TIME = 0.85  # s, discharge peak of every Type A case in the paper
+DAM_EXIT = 1.24  # x of the dam's downstream face [m] (cases/papers/slit_dam_dem/*.toml)
+NAME = re.compile(r"B_slit([AB])_sd(\d+)(?:_(\d+)b)?$")
+
+
+def boulders_through(run):
+    """(t, number of 4 cm boulders downstream of the dam) from the grain frames."""
+    out = []
+    for t, path in frames(run, "grains"):
+        f = read_vtu(path)
+        big = f["radius"] > 0.015
+        out.append((t, int(np.count_nonzero(f["points"][big, 0] > DAM_EXIT))))
+    return out
+
+
+def analyse(run):
+    q = read_probe(run, "slit_discharge")
+    if not q:
+        return None
+    t, m = q["time [s]"], column(q, "solid [kg/s]")
+    k = int(np.argmax(m))
+    trap = read_probe(run, "trapping")
+    e = column(trap, "E")[-1] if trap else float("nan")
+    passed = column(q, "solid_cumulative")[-1]
+    # time after the peak at which the rate first falls to half the peak
+    after = np.nonzero((t > t[k]) & (m < 0.5 * m[k]))[0]
+    return dict(t=t, q=m, peak=m[k], t_peak=t[k], passed=passed, E=e,
+                half=t[after[0]] if len(after) else float("nan"), end=t[-1])
+
+
+def report(root, figures):
+    lines = ["### Two-level DEM slit dam (section B)", ""]
+    rows, curves = [], {}
+    for run in sorted(glob.glob(os.path.join(root, "B_slit*"))):
+        m = NAME.search(run)
+        if not m or not os.path.isdir(run):
+            continue
+        label = f"{m.group(1)}-SD{m.group(2)}" + (f"-{m.group(3)}B" if m.group(3) else "")
+        a = analyse(run)
+        n, mass = grain_mass(run)
+        if a is None:
+            rows.append([label, f"{n} / {mass:.2f} kg", status(run)] + ["–"] * 5)
+            continue
+        b = boulders_through(run) if m.group(1) == "B" else []
+        nb = f"{b[-1][1]} of {m.group(3)}" if b else "–"
+        rows.append([label, f"{n} / {mass:.2f} kg", f"{wall_seconds(run):.0f} s ({a['end']:.2f} s)",
+                     f"{a['peak']:.2f}", f"{a['t_peak']:.2f} (0.85, {a['t_peak'] - PEAK_TIME:+.2f} s)",
+                     f"{a['passed']:.2f} ({a['passed'] / mass:.0%})", f"{a['E']:.2f}", nb])
+        curves[label] = (a, b)
+    lines += ["Discharge through the slit (plane 1 cm downstream of the dam), time from the "
+              "release; E = trapping efficiency between x = 1.0 m and the plane; the paper's "
+              "peak time in brackets:", ""]
+    lines += table(["case", "grains / mass", "wall (simulated)", "peak [kg/s]", "peak time [s]",
+                    "passed [kg]", "E", "boulders through"], rows)
+    lines.append("")
+    if figures and curves:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(1, 2, figsize=(11, 4))
+        for label, (a, b) in sorted(curves.items()):
+            ax[0].plot(a["t"], a["q"], lw=1, label=label)
+            if b:
+                ax[1].step([x[0] for x in b], [x[1] for x in b], where="post", label=label)
+        ax[0].axvline(PEAK_TIME, ls="--", c="k", lw=0.8, label="paper's peak time")
+        ax[0].set(xlabel="t [s]", ylabel="discharge through the slit [kg/s]")
+        ax[1].set(xlabel="t [s]", ylabel="boulders downstream of the dam")
+        for x in ax:
+            x.legend(fontsize=8)
+            x.grid(alpha=0.3)
+        fig.tight_layout()
+        path = os.path.join(figures, "slit_dam_discharge.png")
+        fig.savefig(path, dpi=110)
+        lines += [f"![slit discharge](img/{os.path.basename(path)})", ""]
+    return lines
