@@ -33,7 +33,7 @@ def runs(root):
     out = []
     for path in sorted(glob.glob(os.path.join(root, "E_*"))):
         m = NAME.search(path)
-        if m and os.path.isdir(path):
+        if m and os.path.exists(os.path.join(path, "case.toml")):
             out.append((m.group(1), int(m.group(2)), m.group(3), int(m.group(4)), path))
     return out
 
@@ -82,15 +82,18 @@ def report(root, figures):
         if s is None:
             rows.append([f"F{slope}-{d}", dim, f"{n} / {m:.1f} kg", status(run)] + ["–"] * 8)
             continue
+        fr_paper = p[0] / math.sqrt(9.81 * p[1] * math.cos(math.radians(slope)))
         rows.append([f"F{slope}-{d}", dim, f"{n} / {m:.1f} kg", f"{wall_seconds(run):.0f} s",
                      f"{s['v']:.2f} ({p[0]}, {pct(s['v'], p[0])})",
                      f"{s['h']:.3f} ({p[1]})", f"{s.get('h_dense', float('nan')):.3f} ({pct(s.get('h_dense'), p[1])})",
                      f"{d / 1000 / s['h']:.2f} ({p[2]})",
                      f"{s['v'] / s['h']:.0f} ({p[3]:.0f})",
-                     f"{s['Fr']:.2f} ({p[4]})", f"{s.get('Fr_dense', float('nan')):.2f}",
+                     f"{s['Fr']:.2f} ({p[4]}; {fr_paper:.2f})", f"{s.get('Fr_dense', float('nan')):.2f}",
                      f"{s['Savage']:.2f} ({p[5]})"])
     lines += ["Free flow, section 1.0–1.1 m downstream of the gate, means over the surge body "
-              "(h ≥ h_max/2); paper's value in brackets:", ""]
+              "(h ≥ h_max/2); paper's value in brackets (for Fr also v/√(g h cosθ) from the "
+              "paper's own v and h, which its Fr column does not follow); h top = 95th "
+              "percentile of grain tops, h dense = solid depth / the paper's solid fraction:", ""]
     lines += table(["test", "dim", "grains / mass", "wall", "v [m/s]", "h top [m]",
                     "h dense [m]", "δ/h", "γ̇ [1/s]", "Fr", "Fr dense", "Savage"], rows)
     lines.append("")

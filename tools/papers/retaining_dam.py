@@ -71,7 +71,8 @@ def analyse(run):
 def report(root, figures):
     lines = ["### Retaining dam (section D)", ""]
     runs = sorted(glob.glob(os.path.join(root, "D_dam*")))
-    res = [(r, analyse(r)) for r in runs if os.path.exists(os.path.join(r, "probes", "dam_load.csv"))]
+    ready = [r for r in runs if all(read_probe(r, n) for n in ("dam_load", "crest", "approach"))]
+    res = [(r, analyse(r)) for r in ready if os.path.isdir(r)]
     rows = []
     for run, r in sorted(res, key=lambda x: x[1]["beta"]):
         p = PAPER.get(int(round(r["beta"])), (None, None, None))

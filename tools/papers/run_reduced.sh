@@ -3,6 +3,7 @@
 # reproductions") into runs/papers/<run>, JOBS runs at a time with one thread each (default 2),
 # skipping runs whose summary.json says they completed. Then regenerate the report with
 #   /usr/bin/python3 tools/papers/report.py runs/papers --figures docs/img
+# Exits non-zero when a run fails (its output so far is kept). Also `ctest -L paper`.
 # Usage: tools/papers/run_reduced.sh [flume|slit|baffles|check|container|dam ...]  (default all)
 set -u
 cd "$(dirname "$0")/../.."
@@ -62,7 +63,9 @@ one() { # NAME CASE ARGS...
   fi
   local t0=$SECONDS
   "$BIN" run "$case" --out "$OUT/$name" --threads 1 "$@" >"$OUT/$name.log" 2>&1
-  echo "$name: exit $? after $((SECONDS - t0)) s"
+  local rc=$?
+  echo "$name: exit $rc after $((SECONDS - t0)) s"
+  return $rc
 }
 export -f one
 export OUT BIN

@@ -15,7 +15,8 @@ class SectionProbe : public Probe {
 public:
     SectionProbe(const io::ProbeSpec& s, const io::CaseSpec& c);
     std::vector<std::string> columns() const override {
-        return {"h [m]", "v [m/s]", "rho_bulk [kg/m3]", "Fr [-]", "N_savage [-]", "grains [-]"};
+        return {"h [m]",        "v [m/s]",    "rho_bulk [kg/m3]", "Fr [-]",
+                "N_savage [-]", "grains [-]", "h_solid [m]"};
     }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
 

@@ -1,0 +1,73 @@
+#!/usr/bin/env python3
+"""Checks tools/papers/report.py's analyses on synthetic run outputs with known answers: surge
+means at the flume section, barrier peak / static, slit discharge peak and trapping, bore
+speed of the container case, and that the whole report renders."""
+import os
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+root = sys.argv[1]
+sys.path.insert(0, os.path.join(root, "tools", "papers"))
+import container  # noqa: E402
+import granular_flume  # noqa: E402
+import slit_dam  # noqa: E402
+
+
+def write(run, name, header, cols):
+    os.makedirs(os.path.join(run, "probes"), exist_ok=True)
+    open(os.path.join(run, "case.toml"), "a").close()
+    np.savetxt(os.path.join(run, "probes", name + ".csv"), np.column_stack(cols), delimiter=",",
+               header=",".join(header), comments="")
+
+
+with tempfile.TemporaryDirectory() as d:
+    t = np.linspace(0, 2, 2001)
+    # Section: a surge with h = 0.02 m and v = 2 m/s between 0.5 and 1 s, a 1 mm tail elsewhere.
+    body = (t >= 0.5) & (t <= 1.0)
+    h = np.where(body, 0.02, 0.001)
+    v = np.where(body, 2.0, 0.1)
+    run = os.path.join(d, "E_free30_2d_d10")
+    z = np.zeros_like(t)
+    write(run, "section", ["time [s]", "h [m]", "v [m/s]", "rho_bulk [kg/m3]", "Fr [-]",
+                           "N_savage [-]", "grains [-]", "h_solid [m]"],
+          [t, h, v, z, v / np.sqrt(9.81 * h), z + 1.5, z + 10, h * 1611 / 2550])
+    open(os.path.join(run, "log.txt"), "w").write("dem: 510 grains, 20.43 kg, 3 walls\n")
+    s = granular_flume.surge(run, 30, 10)
+    assert abs(s["v"] - 2.0) < 1e-12 and abs(s["h"] - 0.02) < 1e-12, s
+    assert abs(s["t0"] - 0.5) < 1e-9 and abs(s["t1"] - 1.0) < 1e-9, s
+    assert abs(s["h_dense"] - 0.02) < 1e-12, s  # h_solid at the paper's solid fraction
+    fr = 2.0 / np.sqrt(9.81 * 0.02 * np.cos(np.radians(30)))
+    assert abs(s["Fr_dense"] - fr) < 1e-9, s
+    # Barrier: a triangular 50 N pulse on a 5 N static load reached at 1.5 s.
+    run = os.path.join(d, "E_barrier30_2d_d10")
+    f = np.where(t < 0.5, 0.0, 5.0) + 45.0 * np.maximum(0, 1 - np.abs(t - 0.6) / 0.05)
+    write(run, "barrier_force", ["time [s]", "Fx [N]", "Fy [N]", "Fz [N]", "F [N]", "Fn [N]",
+                                 "Fn_avg [N]"], [t, f, z, z, f, f, f])
+    b = granular_flume.barrier(run)
+    assert abs(b["peak"] - 50.0) < 1e-9 and abs(b["t_peak"] - 0.6) < 1e-9, b
+    assert abs(b["static"] - 5.0) < 1e-12, b
+    # Slit discharge: a Gaussian pulse peaking at 0.85 s; E = 0.25 at the end.
+    run = os.path.join(d, "B_slitA_sd5")
+    q = 10 * np.exp(-(((t - 0.85) / 0.1) ** 2))
+    write(run, "slit_discharge", ["time [s]", "solid [kg/s]", "solid_Q [m3/s]",
+                                  "solid_cumulative [kg]"], [t, q, q / 2650, np.cumsum(q) * 1e-3])
+    write(run, "trapping", ["time [s]", "M_up [kg]", "M_down [kg]", "E [-]"],
+          [t, z + 4, z + 3, z + 0.25])
+    a = slit_dam.analyse(run)
+    assert abs(a["t_peak"] - 0.85) < 1e-9 and abs(a["peak"] - 10) < 1e-9, a
+    assert abs(a["E"] - 0.25) < 1e-12, a
+    assert abs(a["passed"] - 10 * 0.1 * np.sqrt(np.pi)) < 0.02, a  # integral of the pulse
+    # Container: a front moving at 2.5 m/s, at 3.2 m at t = 1.28 s.
+    run = os.path.join(d, "C_container2d")
+    write(run, "front", ["time [s]", "x_front [m]"], [t, 2.5 * t])
+    speed, arrive = container.bore_speed(container.read_probe(run, "front"))
+    assert abs(speed - 2.5) < 1e-6 and abs(arrive - 1.28) < 1e-3, (speed, arrive)
+    # The whole report renders with what is there (and without the other runs).
+    out = subprocess.run([sys.executable, os.path.join(root, "tools", "papers", "report.py"), d],
+                         check=True, capture_output=True, text=True).stdout
+    assert "| F30-10 | 2d | 510 / 20.4 kg" in out, out
+    assert "| B30-10 | 2d |" in out and "| 10.0 | 11 (-9 %) |" in out, out
+print("papers report: OK")
