@@ -61,9 +61,14 @@ one() { # NAME CASE ARGS...
     echo "skip $name (done)"
     return
   fi
+  if ! mkdir "$OUT/$name.lock" 2>/dev/null; then
+    echo "skip $name (another invocation runs it; remove $OUT/$name.lock if none does)"
+    return
+  fi
   local t0=$SECONDS
   "$BIN" run "$case" --out "$OUT/$name" --threads 1 "$@" >"$OUT/$name.log" 2>&1
   local rc=$?
+  rmdir "$OUT/$name.lock"
   echo "$name: exit $rc after $((SECONDS - t0)) s"
   return $rc
 }
