@@ -13,8 +13,9 @@ H0 = 0.4
 PAPER = dict(bore_sph=2.53, bore_exp=2.46, bore_chanson=2.65)
 
 
-def bore_speed(front, x0=2.9, x1=3.5):
-    """Mean front speed between x0 and x1 (WG3 at 3.2 m) and the arrival time at 3.2 m."""
+def bore_speed(front, x0=2.6, x1=3.1):
+    """Mean front speed between x0 and x1, the 0.5 m before the container's upstream face
+    (3.125 m; WG3 at 3.2 m), and the arrival time at 3.2 m."""
     t, x = front["time [s]"], column(front, "x_front")
     i0, i1 = np.argmax(x >= x0), np.argmax(x >= x1)
     if x.max() < x1:
@@ -35,7 +36,7 @@ def report(root, figures):
     late = (t >= start + 0.5) & (t <= start + 1.0)
     g = {k: read_probe(run, k) for k in ("WG1", "WG2", "WG3")}
     depth = {k: column(v, "elevation")[-1] for k, v in g.items() if v}
-    rows = [["bore front speed at WG3 [m/s]", f"{speed:.2f}",
+    rows = [["bore front speed at WG3 [m/s] (2.6–3.1 m)", f"{speed:.2f}",
              f"{PAPER['bore_sph']} SPH / {PAPER['bore_exp']} exp. / {PAPER['bore_chanson']} Chanson",
              f"{100 * (speed / PAPER['bore_exp'] - 1):+.0f} % vs exp."],
             ["front arrival at x = 3.2 m [s]", f"{arrive:.2f}", "–", ""],
