@@ -48,6 +48,8 @@ def analyse(run):
         out[key + "_arrive"] = out[tk][hit[0]] if len(hit) else float("nan")
     run_up = read_probe(run, "barrier_runup")
     out["runup"] = column(run_up, "runup").max() if run_up else float("nan")
+    over = read_probe(run, "overtopping")
+    out["overtopped"] = column(over, "fluid_volume")[-1] if over else float("nan")
     final = [read_probe(run, f"boulder{k}") for k in range(1, BOULDERS + 1)]
     out["boulders_x"] = [b["x [m]"][-1] for b in final if b]
     out["fronts"] = fronts(run)
@@ -72,14 +74,14 @@ def report(root, figures):
     rows = []
     for nu, (run, a) in sorted(res.items()):
         if a is None:
-            rows.append([nu, status(run)] + ["–"] * 7)
+            rows.append([nu, status(run)] + ["–"] * 9)
             continue
         t12, gap12 = lead_gap(a["fronts"], 12.0)
         rows.append([nu, f"{wall_seconds(run):.0f} s ({a['end']:.1f} s)",
                      f"{gap12:+.1f} m at {t12:.1f} s",
                      f"{a['baffle_arrive']:.2f}", f"{a['baffle_peak']:.0f} at {a['baffle_tpeak']:.2f} s",
                      f"{a['barrier_peak']:.0f} at {a['barrier_tpeak']:.2f} s",
-                     f"{a['barrier_bodies'].max():.0f}", f"{a['runup']:.2f}",
+                     f"{a['barrier_bodies'].max():.0f}", f"{a['runup']:.2f}", f"{a['overtopped']:.1f}",
                      ", ".join(f"{x:.1f}" for x in sorted(a["boulders_x"])),
                      REGIME.get(nu, "")])
     lines += ["Loads are impulse averages over 0.01 s normal to the structure; "
@@ -87,7 +89,8 @@ def report(root, figures):
               "boulder when the front passes x = 12 m (3 m before the first baffle row):", ""]
     lines += table(["ν [m²/s]", "wall (simulated)", "front − boulder", "baffles hit [s]",
                     "baffle load peak [kN]", "barrier load peak [kN]", "boulder part [kN]",
-                    "barrier run-up [m]", "boulders' final x [m]", "paper's regime"], rows)
+                    "barrier run-up [m]", "over the barrier [m³]", "boulders' final x [m]",
+                    "paper's regime"], rows)
     lines.append("")
     if figures and res:
         import matplotlib
