@@ -145,7 +145,7 @@ def regimes(res, figures):
                 tb, pb = min(bo, key=lambda f: abs(f[0] - t))
                 b = read_vtu(pb)
                 a.scatter(b["points"][:, 0], b["points"][:, 1], s=1, c="r")
-            a.set(xlim=(-0.5, 23), ylim=(-0.5, 6.5), aspect="equal",
+            a.set(xlim=(-0.5, 30.5), ylim=(-0.5, 6.5), aspect="equal",
                   title=f"ν = {nu} m²/s, t = {tf:.1f} s (plan view)")
         fig.colorbar(sc, ax=ax[i].tolist(), label="|v| [m/s]", shrink=0.8)
     path = os.path.join(figures, "baffles_regimes.png")
