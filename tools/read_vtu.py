@@ -5,6 +5,7 @@ import sys
 import numpy as np
 
 TYPES = {"Float32": np.float32, "Float64": np.float64, "Int32": np.int32, "UInt8": np.uint8,
+         "UInt32": np.uint32, "Int64": np.int64,
          "UInt64": np.uint64}
 
 

@@ -16,7 +16,8 @@ P=cases/papers
 
 list() {
   case "$1" in
-  flume) # section E: 2D discs, all sizes (3 mm with contacts softened to 1e6 N/m: cost); 3D 38 mm
+  flume) # section E: 2D discs, all sizes (3 mm with contacts softened to 1e6 N/m: cost); 3D 38 mm,
+    # and 23 mm at 30 degrees
     for s in 10 30; do
       for k in free barrier; do
         echo "E_${k}${s}_2d_d3 $P/granular_flume/${k}${s}_2d.toml --set grains.0.diameter=0.003 $SOFT"
@@ -26,6 +27,8 @@ list() {
         echo "E_${k}${s}_3d_d38 $P/granular_flume/${k}${s}_3d.toml --set grains.0.diameter=0.038"
       done
     done
+    echo "E_free30_3d_d23 $P/granular_flume/free30_3d.toml --set grains.0.diameter=0.023"
+    echo "E_barrier30_3d_d23 $P/granular_flume/barrier30_3d.toml --set grains.0.diameter=0.023"
     ;;
   slit) # section B, two-level DEM: Type A SD5 (the paper's 12,393 grains), Type B with SD5 fines
     echo "B_slitA_sd5 $P/slit_dam_dem/typeA.toml"
