@@ -121,16 +121,20 @@ def report(root, figures):
 
 
 def regimes(res, figures):
-    """Side and plan views of slurry and boulders for each viscosity at three times."""
+    """Side views (x-z) of slurry (all particles, coloured by speed) and boulders for each
+    viscosity at three times; walls shown in the mid-channel slice 2.6 < y < 3.4."""
     import matplotlib.pyplot as plt
+    from matplotlib.patches import Circle
     times = (2.0, 3.5, 6.0)
     nus = [nu for nu in sorted(res) if res[nu][1] is not None]
     if not nus:
         return []
-    fig, ax = plt.subplots(len(nus), len(times), figsize=(15, 2.6 * len(nus)), squeeze=False)
+    fig, ax = plt.subplots(len(nus), len(times), figsize=(16, 2.3 * len(nus)), squeeze=False)
+    sc = None
     for i, nu in enumerate(nus):
         run = res[nu][0]
-        fl, bo = frames(run, "particles"), frames(run, "bodies")
+        fl = frames(run, "particles")
+        tracks = [read_probe(run, f"boulder{k}") for k in range(1, BOULDERS + 1)]
         for j, t in enumerate(times):
             a = ax[i][j]
             if not fl:
@@ -138,16 +142,23 @@ def regimes(res, figures):
             tf, path = min(fl, key=lambda f: abs(f[0] - t))
             f = read_vtu(path)
             p, v = f["points"], np.linalg.norm(f["velocity"], axis=1)
-            wall = f["type"] != 0
-            a.scatter(p[wall, 0], p[wall, 1], s=0.2, c="0.8")
-            sc = a.scatter(p[~wall, 0], p[~wall, 1], s=0.5, c=v[~wall], cmap="viridis", vmin=0, vmax=12)
-            if bo:
-                tb, pb = min(bo, key=lambda f: abs(f[0] - t))
-                b = read_vtu(pb)
-                a.scatter(b["points"][:, 0], b["points"][:, 1], s=1, c="r")
-            a.set(xlim=(-0.5, 30.5), ylim=(-0.5, 6.5), aspect="equal",
-                  title=f"ν = {nu} m²/s, t = {tf:.1f} s (plan view)")
-        fig.colorbar(sc, ax=ax[i].tolist(), label="|v| [m/s]", shrink=0.8)
+            fluid = f["type"] == 0
+            mid = ~fluid & (f["group"] >= 0) & (p[:, 1] > 2.6) & (p[:, 1] < 3.4)
+            a.scatter(p[mid, 0], p[mid, 2], s=0.3, c="0.7")
+            sc = a.scatter(p[fluid, 0], p[fluid, 2], s=0.6, c=v[fluid], cmap="viridis", vmin=0,
+                           vmax=12)
+            for b in tracks:
+                if b:
+                    x, z = (np.interp(tf, b["time [s]"], b[k]) for k in ("x [m]", "z [m]"))
+                    a.add_patch(Circle((x, z), 0.5, fc="none", ec="r", lw=1))
+            a.set(xlim=(0, 30.5), ylim=(-0.5, 7.5), aspect="equal",
+                  title=f"ν = {nu} m²/s, t = {tf:.1f} s")
+            if j == 0:
+                a.set_ylabel("z (normal to the bed) [m]")
+            if i == len(nus) - 1:
+                a.set_xlabel("x along the channel [m]")
+    if sc is not None:
+        fig.colorbar(sc, ax=ax.ravel().tolist(), label="|v| [m/s]", shrink=0.6)
     path = os.path.join(figures, "baffles_regimes.png")
     fig.savefig(path, dpi=90)
     return [f"![regimes](img/{os.path.basename(path)})", ""]
