@@ -40,7 +40,8 @@ def analyse(run):
         return None
     out = dict(t=baf["time [s]"], baffle=column(baf, "Fn_avg") / 1e3,
                tb=bar["time [s]"], barrier=column(bar, "Fn_avg") / 1e3,
-               barrier_bodies=column(bar, "Fx_bodies") / 1e3, end=bar["time [s]"][-1])
+               barrier_bodies=column(bar, "Fx_bodies") / 1e3,
+               baffle_bodies=column(baf, "Fx_bodies") / 1e3, end=bar["time [s]"][-1])
     for key, tk in (("baffle", "t"), ("barrier", "tb")):
         k = int(np.argmax(out[key]))
         out[key + "_peak"], out[key + "_tpeak"] = out[key][k], out[tk][k]
@@ -81,14 +82,16 @@ def report(root, figures):
                      f"{gap12:+.1f} m at {t12:.1f} s",
                      f"{a['baffle_arrive']:.2f}", f"{a['baffle_peak']:.0f} at {a['baffle_tpeak']:.2f} s",
                      f"{a['barrier_peak']:.0f} at {a['barrier_tpeak']:.2f} s",
-                     f"{a['barrier_bodies'].max():.0f}", f"{a['runup']:.2f}", f"{a['overtopped']:.1f}",
+                     f"{a['baffle_bodies'].max():.0f} / {a['barrier_bodies'].max():.0f}",
+                     f"{a['runup']:.2f}", f"{a['overtopped']:.1f}",
                      ", ".join(f"{x:.1f}" for x in sorted(a["boulders_x"])),
                      REGIME.get(nu, "")])
     lines += ["Loads are impulse averages over 0.01 s normal to the structure; "
               "\"front − boulder\" is the distance by which the slurry front leads the first "
               "boulder when the front passes x = 12 m (3 m before the first baffle row):", ""]
     lines += table(["ν [m²/s]", "wall (simulated)", "front − boulder", "baffles hit [s]",
-                    "baffle load peak [kN]", "barrier load peak [kN]", "boulder part [kN]",
+                    "baffle load peak [kN]", "barrier load peak [kN]",
+                    "boulders' peak on baffles / barrier [kN]",
                     "barrier run-up [m]", "over the barrier [m³]", "boulders' final x [m]",
                     "paper's regime"], rows)
     lines.append("")
