@@ -17,12 +17,16 @@ NAME = re.compile(r"B_slit([AB])_sd(\d+)(?:_(\d+)b)?$")
 
 
 def boulders_through(run):
-    """(t, number of 4 cm boulders downstream of the dam) from the grain frames."""
-    out = []
+    """(t, number of 4 cm boulders that have passed the dam) from the grain frames: all
+    boulders of the first frame minus those still upstream of the dam's downstream face (the
+    outlet removes the ones that reach the end of the flume)."""
+    out, total = [], None
     for t, path in frames(run, "grains"):
         f = read_vtu(path)
         big = f["radius"] > 0.015
-        out.append((t, int(np.count_nonzero(f["points"][big, 0] > DAM_EXIT))))
+        if total is None:
+            total = int(np.count_nonzero(big))
+        out.append((t, total - int(np.count_nonzero(f["points"][big, 0] <= DAM_EXIT))))
     return out
 
 
@@ -76,13 +80,14 @@ def report(root, figures):
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
         fig, ax = plt.subplots(1, 2, figsize=(11, 4))
-        for label, (a, b) in sorted(curves.items()):
-            ax[0].plot(a["t"], a["qs"], lw=1, label=label)
+        for k, (label, (a, b)) in enumerate(sorted(curves.items())):
+            ax[0].plot(a["t"], a["qs"], lw=1, c=f"C{k}", label=label)
             if b:
-                ax[1].step([x[0] for x in b], [x[1] for x in b], where="post", label=label)
+                ax[1].step([x[0] for x in b], [x[1] for x in b], where="post", c=f"C{k}",
+                           label=label)
         ax[0].axvline(PEAK_TIME, ls="--", c="k", lw=0.8, label="paper's peak time")
         ax[0].set(xlabel="t [s]", ylabel="discharge through the slit, 0.1 s mean [kg/s]")
-        ax[1].set(xlabel="t [s]", ylabel="boulders downstream of the dam")
+        ax[1].set(xlabel="t [s]", ylabel="boulders through the slit (cumulative)")
         for x in ax:
             x.legend(fontsize=8)
             x.grid(alpha=0.3)
