@@ -7,7 +7,7 @@ import re
 
 import numpy as np
 
-from common import column, read_probe, status, table, wall_seconds
+from common import column, read_probe, save_figure, status, table, wall_seconds
 from vtk_series import frames, read_vtu
 
 REGIME = {0.1: "fluid front ahead of the boulders, jet-like run-up",
@@ -112,13 +112,7 @@ def report(root, figures):
         ax[0].set(xlabel="t [s]", ylabel="load on the baffles [kN]")
         ax[1].set(xlabel="t [s]", ylabel="load on the barrier [kN]")
         ax[2].set(xlabel="t [s]", ylabel="x [m]")
-        for x in ax:
-            x.legend(fontsize=7)
-            x.grid(alpha=0.3)
-        fig.tight_layout()
-        path = os.path.join(figures, "baffles_loads.png")
-        fig.savefig(path, dpi=110)
-        lines += [f"![baffle and barrier loads](img/{os.path.basename(path)})", ""]
+        lines += save_figure(fig, ax, figures, "baffles_loads.png", "baffle and barrier loads", 7)
         lines += regimes(res, figures)
     return lines
 

@@ -82,3 +82,21 @@ def table(header, rows):
     out = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
     out += ["| " + " | ".join(str(c) for c in r) + " |" for r in rows]
     return out
+
+
+def running_mean(t, f, window):
+    """Centred running mean of a uniformly sampled series f(t) over `window` seconds."""
+    n = max(1, int(round(window / np.median(np.diff(t))))) if len(t) > 1 else 1
+    return np.convolve(f, np.ones(n) / n, mode="same")
+
+
+def save_figure(fig, axes, figures, name, alt, legend_size=8):
+    """Legends and grids on every axis, then docs-ready PNG; returns the Markdown image line."""
+    for a in np.ravel(axes):
+        if a.get_legend_handles_labels()[0]:
+            a.legend(fontsize=legend_size)
+        a.grid(alpha=0.3)
+    fig.tight_layout()
+    path = os.path.join(figures, name)
+    fig.savefig(path, dpi=110)
+    return [f"![{alt}](img/{name})", ""]

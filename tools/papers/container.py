@@ -7,7 +7,7 @@ import os
 
 import numpy as np
 
-from common import column, read_probe, status, table, wall_seconds
+from common import column, read_probe, save_figure, status, table, wall_seconds
 
 H0 = 0.4
 PAPER = dict(bore_sph=2.53, bore_exp=2.46, bore_chanson=2.65)
@@ -63,11 +63,5 @@ def report(root, figures):
         ax[2].plot(t, vx, label="vx")
         ax[2].plot(t, c["vz [m/s]"], label="vz")
         ax[2].set(xlabel="t [s]", ylabel="[m/s]", title="container velocity")
-        for a in ax:
-            a.legend(fontsize=8) if a.get_legend_handles_labels()[0] else None
-            a.grid(alpha=0.3)
-        fig.tight_layout()
-        path = os.path.join(figures, "container_dambreak2d.png")
-        fig.savefig(path, dpi=110)
-        lines += [f"![container](img/{os.path.basename(path)})", ""]
+        lines += save_figure(fig, ax, figures, "container_dambreak2d.png", "container")
     return lines

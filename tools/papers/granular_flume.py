@@ -8,7 +8,8 @@ import re
 
 import numpy as np
 
-from common import column, grain_mass, pct, read_probe, status, table, wall_seconds
+from common import (column, grain_mass, pct, read_probe, running_mean, save_figure, status, table,
+                    wall_seconds)
 
 # test (slope, d mm): v, h, delta/h, shear rate, Fr, Savage (paper's free-flow table)
 PAPER_FREE = {
@@ -67,8 +68,7 @@ def barrier(run):
     k = int(np.argmax(f))
     tail = f[int(0.9 * len(f)):]
     # 20 ms running mean: what a load cell of ~50 Hz bandwidth would read
-    n = max(1, int(round(SMOOTH / np.median(np.diff(t))))) if len(t) > 1 else 1
-    smooth = np.convolve(f, np.ones(n) / n, mode="same")
+    smooth = running_mean(t, f, SMOOTH)
     return dict(t=t, f=f, peak=f[k], t_peak=t[k], static=tail.mean(), end=t[-1],
                 smooth=smooth, peak_smooth=smooth.max())
 
@@ -136,10 +136,5 @@ def report(root, figures):
             a.plot(b["t"], b["smooth"], ls, lw=0.9, label=f"{dim} d = {d} mm")
         for a, s in zip(ax, (10, 30)):
             a.set(xlabel="t [s]", ylabel="barrier load, 20 ms running mean [N]", title=f"{s}° barrier")
-            a.legend(fontsize=8)
-            a.grid(alpha=0.3)
-        fig.tight_layout()
-        path = os.path.join(figures, "granular_barrier_force.png")
-        fig.savefig(path, dpi=110)
-        lines += [f"![barrier load](img/{os.path.basename(path)})", ""]
+        lines += save_figure(fig, ax, figures, "granular_barrier_force.png", "barrier load")
     return lines

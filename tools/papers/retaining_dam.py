@@ -13,7 +13,7 @@ import glob
 import math
 import os
 
-from common import pct, read_probe, table, wall_seconds
+from common import pct, read_probe, save_figure, table, wall_seconds
 
 PAPER = {  # slope: (crest peak mm, peak force kN, Kwan kN) from seed_experiments.md section D
     20: (None, 3032, 3618),
@@ -95,17 +95,11 @@ def report(root, figures):
         import matplotlib.pyplot as plt
         fig, ax = plt.subplots(1, 2, figsize=(11, 4))
         for _, r in sorted(res, key=lambda x: x[1]["beta"]):
-            ax[0].plot(r["t"], [f / 1e3 for f in r["fx"]], label=f"{r['beta']:.0f}°")
-            ax[1].plot(r["tc"], [1e3 * u for u in r["du"]], label=f"{r['beta']:.0f}°")
+            ax[0].plot(r["t"], [f / 1e3 for f in r["fx"]], label=f"groove {r['beta']:.0f}°")
+            ax[1].plot(r["tc"], [1e3 * u for u in r["du"]], label=f"groove {r['beta']:.0f}°")
         ax[0].set_xlabel("time [s]")
         ax[0].set_ylabel("impact force normal to the dam [kN]")
         ax[1].set_xlabel("time [s]")
         ax[1].set_ylabel("crest mid-point displacement [mm]")
-        for x in ax:
-            x.legend(title="groove slope")
-            x.grid(alpha=0.3)
-        fig.tight_layout()
-        path = os.path.join(figures, "retaining_dam.png")
-        fig.savefig(path, dpi=110)
-        lines += [f"![retaining dam](img/{os.path.basename(path)})", ""]
+        lines += save_figure(fig, ax, figures, "retaining_dam.png", "retaining dam")
     return lines

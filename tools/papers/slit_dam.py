@@ -7,7 +7,8 @@ import re
 
 import numpy as np
 
-from common import column, grain_mass, read_probe, status, table, wall_seconds
+from common import (column, grain_mass, read_probe, running_mean, save_figure, status, table,
+                    wall_seconds)
 from vtk_series import frames, read_vtu
 
 PEAK_TIME = 0.85  # s, discharge peak of every Type A case in the paper
@@ -35,8 +36,7 @@ def analyse(run):
     if not q:
         return None
     t, m = q["time [s]"], column(q, "solid [kg/s]")
-    n = max(1, int(round(SMOOTH / np.median(np.diff(t))))) if len(t) > 1 else 1
-    ms = np.convolve(m, np.ones(n) / n, mode="same")  # running mean: the grain-count noise out
+    ms = running_mean(t, m, SMOOTH)  # the grain-count noise out
     k, ks = int(np.argmax(m)), int(np.argmax(ms))
     trap = read_probe(run, "trapping")
     e = column(trap, "E")[-1] if trap else float("nan")
@@ -88,11 +88,5 @@ def report(root, figures):
         ax[0].axvline(PEAK_TIME, ls="--", c="k", lw=0.8, label="paper's peak time")
         ax[0].set(xlabel="t [s]", ylabel="discharge through the slit, 0.1 s mean [kg/s]")
         ax[1].set(xlabel="t [s]", ylabel="boulders through the slit (cumulative)")
-        for x in ax:
-            x.legend(fontsize=8)
-            x.grid(alpha=0.3)
-        fig.tight_layout()
-        path = os.path.join(figures, "slit_dam_discharge.png")
-        fig.savefig(path, dpi=110)
-        lines += [f"![slit discharge](img/{os.path.basename(path)})", ""]
+        lines += save_figure(fig, ax, figures, "slit_dam_discharge.png", "slit discharge")
     return lines
