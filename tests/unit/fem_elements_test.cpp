@@ -6,10 +6,12 @@
 #include "debrisflow/fem/fem_mesh.hpp"
 #include "debrisflow/fem/fem_solver.hpp"
 #include "debrisflow/fem/fem_surface.hpp"
+#include <algorithm>
 #include <fmt/format.h>
 #include <fstream>
 #include <gtest/gtest.h>
 #include <random>
+#include <set>
 
 using namespace debrisflow;
 using namespace debrisflow::fem;
@@ -324,9 +326,42 @@ TEST(FemMaterials, MazarsDamageAndErosion) {
     EXPECT_EQ(f, 0);
 }
 
+// tet10 surface: each quadratic face becomes four flat triangles through its edge nodes, so the
+// DEM surface follows the edge nodes and a grain's reaction reaches all six face nodes. On a
+// unit cube (one hex split into tets): 6 sides x 2 faces x 4 = 48 triangles, outward, closed
+// (area-weighted normals sum to zero), total area 6 m^2, and every edge node on the surface used.
+TEST(FemSurface, Tet10FacesSplitThroughEdgeNodes) {
+    FemParams p;
+    p.gravity = {};
+    FemSolver fem(p, {steel()});
+    fem.add_solid("cube", box_mesh(ElementType::tet10, {0, 0, 0}, {1, 1, 1}, {1, 1, 1}), 0);
+    fem.initialize();
+    const auto facets = boundary_facets(fem);
+    ASSERT_EQ(facets.size(), 48u);
+    const auto& X = fem.reference();
+    Real area = 0;
+    Vec3 closure{};
+    std::set<std::int32_t> used;
+    for (const auto& f : facets) {
+        const Vec3 a = X[std::size_t(f.nodes[0])], b = X[std::size_t(f.nodes[1])],
+                   c = X[std::size_t(f.nodes[2])];
+        const Vec3 an = Real(0.5) * cross(b - a, c - a);
+        area += norm(an);
+        closure += an;
+        const Vec3 centre = (Real(1) / 3) * (a + b + c);
+        EXPECT_GT(dot(facet_normal(f, X), centre - Vec3{0.5, 0.5, 0.5}), 0);
+        used.insert(f.nodes.begin(), f.nodes.end());
+    }
+    EXPECT_NEAR(area, 6, 1e-12);
+    EXPECT_NEAR(norm(closure), 0, 1e-12);
+    // Surface nodes of the split cube: 8 corners, 12 cube-edge midpoints, 6 face-diagonal
+    // midpoints (one per side).
+    EXPECT_EQ(used.size(), 26u);
+}
+
 // SPH <-> FEM shell: boundary particles sit inside the solid within layers x dp of its surface,
 // follow the elements, carry the fluid force back to the nodes with total force conserved,
-// and leave with their element when it erodes.
+// leave with their element when it erodes, and the surface the erosion exposes gets its layer.
 TEST(FemSphShell, FollowsTheElementsAndLeavesWithErodedOnes) {
     FemMaterial m = steel();
     m.erosion_strain = 0.05;
@@ -369,6 +404,29 @@ TEST(FemSphShell, FollowsTheElementsAndLeavesWithErodedOnes) {
     const auto before = set.size();
     set.compact(keep);
     EXPECT_EQ(before - set.size(), 4); // the corner element held 2 x 2 particles
-    shell.move_particles(0);           // survivors are found again by id
+    // The exposed faces (x = 90 mm and z = 30 mm around the hole) get their boundary layer:
+    // the inner neighbour's samples at (82.5, 27.5), (87.5, 27.5) and (87.5, 22.5) mm lie within
+    // 2 dp of the new corner at (90, 30) mm; (82.5, 22.5) mm, 10.6 mm away, does not.
+    EXPECT_EQ(shell.expose_new_surface(), 3u);
+    EXPECT_EQ(shell.expose_new_surface(), 0u); // nothing new until the next erosion
+    EXPECT_EQ(shell.particles(), 20u * 8u - 16u * 4u - 4u + 3u);
+    shell.move_particles(0); // survivors are found again by id
     EXPECT_EQ(shell.eroded_keep_mask().size(), 0u);
+    // The updated layer equals the one sampled from scratch on the eroded mesh: same positions,
+    // wall normals and depths.
+    particles::ParticleSet fresh_set;
+    coupling::SphFemCoupling fresh(fem, fresh_set, 0.005, 2, 1000, 2);
+    fresh.move_particles(0);
+    auto layer = [](const particles::ParticleSet& s) {
+        std::vector<std::array<Real, 5>> rows;
+        for (Index i = 0; i < s.size(); ++i)
+            if (s.kind[i] == std::uint8_t(particles::Kind::boundary))
+                rows.push_back({s.x[i], s.z[i], s.wnx[i], s.wnz[i], s.wd[i]});
+        std::sort(rows.begin(), rows.end());
+        return rows;
+    };
+    const auto a = layer(set), b = layer(fresh_set);
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t k = 0; k < a.size(); ++k)
+        for (int c = 0; c < 5; ++c) EXPECT_NEAR(a[k][std::size_t(c)], b[k][std::size_t(c)], 1e-12);
 }

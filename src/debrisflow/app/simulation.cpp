@@ -278,15 +278,19 @@ io::RunReport Simulation::run(const RunOptions& opt) {
             log_.line(fmt::format("t = {:.6g} s: wall '{}' removed", s.t, spec_.walls[w].name));
         });
     }
-    // Eroded elements take their SPH boundary particles with them, between steps.
+    // Eroded elements take their SPH boundary particles with them, between steps, and the
+    // surfaces they expose get boundary particles of their own.
     if (sph_fem_)
         integ.add_hook(time::Hook::after_integration, [this](const time::StepInfo& s) {
             const auto keep = sph_fem_->eroded_keep_mask();
-            if (keep.empty()) return;
             const Index before = set_.size();
-            solver_->remove_particles(keep);
-            log_.line(fmt::format("t = {:.6g} s: {} eroded elements; {} boundary particles removed",
-                                  s.t, fem_->eroded_elements(), before - set_.size()));
+            if (!keep.empty()) solver_->remove_particles(keep);
+            const Index removed = before - set_.size();
+            const std::size_t added = sph_fem_->expose_new_surface();
+            if (removed == 0 && added == 0) return;
+            log_.line(fmt::format("t = {:.6g} s: {} eroded elements; {} boundary particles "
+                                  "removed, {} added on the exposed surface",
+                                  s.t, fem_->eroded_elements(), removed, added));
         });
     // Open boundaries act between the integration and the neighbour search of each step.
     if (!inlets_.empty() || !outlets_.empty() || !feeds_.empty() || !rock_feeds_.empty())

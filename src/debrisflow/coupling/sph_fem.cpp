@@ -22,7 +22,8 @@ struct Box {
 
 SphFemCoupling::SphFemCoupling(fem::FemSolver& fem, particles::ParticleSet& set, Real dp,
                                int layers, Real rho, int dim)
-    : fem_(fem), set_(set), dim_(dim) {
+    : fem_(fem), set_(set), dim_(dim), thickness_(layers * dp), rho_(rho),
+      mass_(rho * std::pow(dp, Real(dim))) {
     facets_ = fem::boundary_facets(fem);
     const auto& X = fem.reference();
     // Element bounding boxes (reference configuration).
@@ -41,10 +42,12 @@ SphFemCoupling::SphFemCoupling(fem::FemSolver& fem, particles::ParticleSet& set,
             boxes[s].push_back(b);
         }
     }
+    // The live element holding reference point p.
     auto find = [&](Vec3 p, std::size_t& s_out, std::size_t& e_out, std::array<Real, 3>& xi) {
         for (std::size_t s = 0; s < boxes.size(); ++s)
             for (std::size_t e = 0; e < boxes[s].size(); ++e)
-                if (boxes[s][e].holds(p, 1e-9) && fem::locate(fem, s, e, p, xi)) {
+                if (!fem.solids()[s].eroded[e] && boxes[s][e].holds(p, 1e-9) &&
+                    fem::locate(fem, s, e, p, xi)) {
                     s_out = s, e_out = e;
                     return true;
                 }
@@ -60,9 +63,8 @@ SphFemCoupling::SphFemCoupling(fem::FemSolver& fem, particles::ParticleSet& set,
         if (find({set.x[i], set.y[i], set.z[i]}, s, e, xi)) keep[std::size_t(i)] = 0, ++removed;
     }
     if (removed > 0) set.compact(keep);
-    // Shell samples on each solid's lattice.
-    const Real thickness = layers * dp;
-    const Real mass = rho * std::pow(dp, Real(dim));
+    // Samples on each solid's lattice: those within the boundary layer become particles, the
+    // deeper ones wait until erosion exposes them.
     for (std::size_t s = 0; s < fem.solids().size(); ++s) {
         const auto& so = fem.solids()[s];
         Vec3 lo = X[std::size_t(so.first_node)], hi = lo;
@@ -74,6 +76,7 @@ SphFemCoupling::SphFemCoupling(fem::FemSolver& fem, particles::ParticleSet& set,
         const int nx = int(std::floor((hi.x - lo.x) / dp + 1e-9));
         const int ny = dim == 2 ? 0 : int(std::floor((hi.y - lo.y) / dp + 1e-9));
         const int nz = int(std::floor((hi.z - lo.z) / dp + 1e-9));
+        const std::size_t before = rows_.size();
         for (int k = 0; k <= nz; ++k)
             for (int j = 0; j <= ny; ++j)
                 for (int i = 0; i <= nx; ++i) {
@@ -84,28 +87,50 @@ SphFemCoupling::SphFemCoupling(fem::FemSolver& fem, particles::ParticleSet& set,
                     std::size_t hs, he;
                     std::array<Real, 3> xi;
                     if (!find(p, hs, he, xi) || hs != s) continue;
-                    Real depth = std::numeric_limits<Real>::max();
-                    std::int32_t nearest = -1;
-                    for (std::size_t f = 0; f < facets_.size(); ++f) {
-                        const Real d = fem::facet_distance(facets_[f], X, p);
-                        if (d < depth) depth = d, nearest = std::int32_t(f);
-                    }
-                    if (nearest < 0 || depth >= thickness) continue;
-                    Row r{std::int32_t(s), std::int32_t(he), {}, nearest};
+                    Row r{std::int32_t(s), std::int32_t(he), {}, -1, p};
                     const auto n = fem::shape_values(so.type, xi);
                     for (std::size_t a = 0; a < n.size(); ++a) r.n[a] = n[a];
-                    set.add(p, {}, rho, mass, particles::Kind::boundary, std::int16_t(-1));
-                    set.set_wall(set.size() - 1,
-                                 fem::facet_normal(facets_[std::size_t(nearest)], X), depth);
-                    row_of_id_.emplace(set.id.back(), std::uint32_t(rows_.size()));
-                    rows_.push_back(r);
+                    Real depth;
+                    r.facet = nearest_facet(p, depth);
+                    if (r.facet >= 0 && depth < thickness_)
+                        add_particle(r, depth);
+                    else
+                        hidden_.push_back(r);
                 }
-        if (rows_.empty())
+        if (rows_.size() == before)
             throw InputError(fmt::format("solid '{}' is thinner than the fluid's dp = {} m: no "
                                          "boundary particles",
                                          so.name, dp));
     }
+    eroded_seen_ = fem.eroded_elements();
     refresh_members();
+}
+
+std::int32_t SphFemCoupling::nearest_facet(Vec3 X, Real& depth) const {
+    depth = std::numeric_limits<Real>::max();
+    std::int32_t nearest = -1;
+    for (std::size_t f = 0; f < facets_.size(); ++f) {
+        const Real d = fem::facet_distance(facets_[f], fem_.reference(), X);
+        if (d < depth) depth = d, nearest = std::int32_t(f);
+    }
+    return nearest;
+}
+
+void SphFemCoupling::add_particle(const Row& r, Real depth) {
+    const auto& so = fem_.solids()[std::size_t(r.solid)];
+    const int nn = fem::nodes_of(so.type);
+    const std::int32_t* c = &so.conn[std::size_t(r.element) * std::size_t(nn)];
+    Vec3 p{}, u{};
+    for (int a = 0; a < nn; ++a) {
+        p = p + r.n[std::size_t(a)] * fem_.positions()[std::size_t(c[a])];
+        u = u + r.n[std::size_t(a)] * fem_.velocities()[std::size_t(c[a])];
+    }
+    if (dim_ == 2) p.y = 0, u.y = 0;
+    set_.add(p, u, rho_, mass_, particles::Kind::boundary, std::int16_t(-1));
+    set_.set_wall(set_.size() - 1,
+                  fem::facet_normal(facets_[std::size_t(r.facet)], fem_.positions()), depth);
+    row_of_id_.emplace(set_.id.back(), std::uint32_t(rows_.size()));
+    rows_.push_back(r);
 }
 
 void SphFemCoupling::refresh_members() {
@@ -156,6 +181,7 @@ std::vector<std::uint8_t> SphFemCoupling::eroded_keep_mask() {
     const long eroded = fem_.eroded_elements();
     if (eroded == eroded_seen_) return {};
     eroded_seen_ = eroded;
+    surface_stale_ = true;
     refresh_members();
     std::vector<std::uint8_t> keep(std::size_t(set_.size()), 1);
     bool any = false;
@@ -169,6 +195,38 @@ std::vector<std::uint8_t> SphFemCoupling::eroded_keep_mask() {
     if (!any) return {};
     layout_seen_ = ~std::uint64_t(0); // members are found again after the removal
     return keep;
+}
+
+std::size_t SphFemCoupling::expose_new_surface() {
+    if (!surface_stale_) return 0;
+    surface_stale_ = false;
+    facets_ = fem::boundary_facets(fem_);
+    refresh_members();
+    // Survivors: the nearest facet (normal) and depth now refer to the new surface.
+    for (std::size_t k = 0; k < members_.size(); ++k) {
+        Row& r = rows_[member_rows_[k]];
+        Real depth;
+        r.facet = nearest_facet(r.X, depth);
+        set_.set_wall(members_[k],
+                      fem::facet_normal(facets_[std::size_t(r.facet)], fem_.positions()), depth);
+    }
+    // Hidden samples of live elements that the new surface brings within the layer.
+    std::size_t added = 0;
+    std::vector<Row> still_hidden;
+    for (Row& r : hidden_) {
+        if (fem_.solids()[std::size_t(r.solid)].eroded[std::size_t(r.element)]) continue;
+        Real depth;
+        r.facet = nearest_facet(r.X, depth);
+        if (depth < thickness_) {
+            add_particle(r, depth);
+            ++added;
+        } else {
+            still_hidden.push_back(r);
+        }
+    }
+    hidden_ = std::move(still_hidden);
+    if (added > 0) layout_seen_ = ~std::uint64_t(0);
+    return added;
 }
 
 void SphFemCoupling::collect_forces(std::vector<Vec3>& f) {

@@ -29,22 +29,34 @@ public:
     Vec3 last_force() const { return last_force_; } // total fluid force on the solids [N]
     // Particles of eroded elements leave with their element: a keep-mask over the particle set
     // (1 = keep) when some must go, else empty. Apply it between steps
-    // (SphSolver::remove_particles).
+    // (SphSolver::remove_particles), then call expose_new_surface().
     std::vector<std::uint8_t> eroded_keep_mask();
-    std::size_t particles() const { return rows_.size(); }
+    // After erosion the surface is rebuilt from the live elements: lattice samples of live
+    // elements that now lie within `layers` dp of it become boundary particles (appended to the
+    // set at their current positions), so the fluid meets what remains; every particle's wall
+    // normal and depth follow the new surface. Returns the number of particles added.
+    std::size_t expose_new_surface();
+    std::size_t particles() const { return row_of_id_.size(); } // live boundary particles
 
 private:
     struct Row {
         std::int32_t solid, element;
         std::array<Real, 10> n; // shape-function values at xi
         std::int32_t facet;     // nearest boundary facet (wall normal)
+        Vec3 X;                 // reference position
     };
+    // Nearest facet of facets_ to a reference position and its distance.
+    std::int32_t nearest_facet(Vec3 X, Real& depth) const;
+    void add_particle(const Row& r, Real depth);
     void refresh_members();
 
     fem::FemSolver& fem_;
     particles::ParticleSet& set_;
     int dim_;
+    Real thickness_, rho_, mass_;
     std::vector<Row> rows_;
+    std::vector<Row> hidden_; // samples deeper than the boundary layer, exposed by erosion
+    bool surface_stale_ = false;
     std::vector<fem::SurfaceFacet> facets_;
     std::unordered_map<ParticleId, std::uint32_t> row_of_id_;
     std::vector<Index> members_;

@@ -15,8 +15,20 @@ const std::vector<std::vector<int>>& faces_of(ElementType t) {
     static const std::vector<std::vector<int>> hex = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
                                                       {2, 3, 7, 6}, {0, 4, 7, 3}, {1, 2, 6, 5}};
     static const std::vector<std::vector<int>> tet = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+    // tet10: corners a, b, c, then the edge nodes of ab, bc, ca (VTK edge order 01 12 02 03 13 23).
+    static const std::vector<std::vector<int>> tet10 = {
+        {0, 2, 1, 6, 5, 4}, {0, 1, 3, 4, 8, 7}, {1, 2, 3, 5, 9, 8}, {0, 3, 2, 7, 9, 6}};
     static const std::vector<std::vector<int>> quad = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
-    return t == ElementType::hex8 ? hex : t == ElementType::quad4 ? quad : tet;
+    switch (t) {
+    case ElementType::hex8:
+        return hex;
+    case ElementType::quad4:
+        return quad;
+    case ElementType::tet10:
+        return tet10;
+    default:
+        return tet;
+    }
 }
 
 } // namespace
@@ -33,7 +45,7 @@ std::vector<SurfaceFacet> boundary_facets(const FemSolver& fem) {
             for (const auto& f : faces_of(so.type)) {
                 std::vector<std::int32_t> ordered, key;
                 for (int a : f) ordered.push_back(c[a]);
-                key = ordered;
+                key.assign(ordered.begin(), ordered.begin() + (f.size() == 6 ? 3 : f.size()));
                 std::sort(key.begin(), key.end());
                 auto it = seen.find(key);
                 if (it != seen.end()) {
@@ -52,6 +64,17 @@ std::vector<SurfaceFacet> boundary_facets(const FemSolver& fem) {
             f.nodes = {o[0], o[1], -1};
             out.push_back(f);
         } else {
+            if (o.size() == 6) { // quadratic face: four flat triangles through its edge nodes,
+                // so the surface follows the edge nodes and loads reach all six
+                for (const auto& t : {std::array<std::int32_t, 3>{o[0], o[3], o[5]},
+                                      std::array<std::int32_t, 3>{o[3], o[1], o[4]},
+                                      std::array<std::int32_t, 3>{o[5], o[4], o[2]},
+                                      std::array<std::int32_t, 3>{o[3], o[4], o[5]}}) {
+                    f.nodes = t;
+                    out.push_back(f);
+                }
+                continue;
+            }
             f.nodes = {o[0], o[1], o[2]};
             out.push_back(f);
             if (o.size() == 4) {

@@ -9,9 +9,9 @@ namespace debrisflow::fem {
 
 class FemSolver;
 
-// A boundary facet of the live elements: a triangle (3D; element quads are split in two) or an
-// edge (2D, nodes[2] = -1), with global node ids ordered so that the right-hand normal (3D) or
-// (dz, 0, -dx) (2D) points out of the solid.
+// A boundary facet of the live elements: a triangle (3D; element quads are split in two, tet10
+// faces in four through their edge nodes) or an edge (2D, nodes[2] = -1), with global node ids
+// ordered so that the right-hand normal (3D) or (dz, 0, -dx) (2D) points out of the solid.
 struct SurfaceFacet {
     std::int32_t solid, element;
     std::array<std::int32_t, 3> nodes;
