@@ -16,13 +16,13 @@ void PairList::build(const GridView& grid, const particles::ParticleView& pv) {
 #pragma omp parallel for schedule(dynamic, 512) reduction(max : worst)
         for (Index i = 0; i < n; ++i) {
             Index c = 0;
-            const bool fluid_i = pv.is_fluid(i);
             Index* out = jj + std::size_t(i) * cap;
-            grid.for_each_neighbor(i, pv.pos(i), pv.x, pv.y, pv.z, [&](Index j, Vec3, Real) {
-                if (j < i || (!fluid_i && !pv.is_fluid(j))) return;
-                if (c < cap) out[c] = j;
-                ++c;
-            });
+            if (pv.is_fluid(i))
+                grid.for_each_neighbor(i, pv.pos(i), pv.x, pv.y, pv.z, [&](Index j, Vec3, Real) {
+                    if (j < i && pv.is_fluid(j)) return;
+                    if (c < cap) out[c] = j;
+                    ++c;
+                });
             cnt[i] = c;
             worst = std::max(worst, c);
         }

@@ -5,10 +5,13 @@
 
 namespace debrisflow::neighbors {
 
-// Half pair list (each pair once, stored with its lower index i < j) built from the cell
-// grid with a search radius larger than the kernel support by a skin, so that it stays
-// valid while no particle has moved more than skin/2 (Verlet 1967). Boundary-boundary pairs
-// are left out. Fixed capacity per particle, grown when a particle overflows it.
+// Half pair list (each pair once) built from the cell grid with a search radius larger than
+// the kernel support by a skin, so that it stays valid while no particle has moved more than
+// skin/2 (Verlet 1967). Fluid-fluid pairs are stored in the row of the lower index, fluid-
+// boundary pairs in the fluid particle's row, boundary-boundary pairs are left out: boundary
+// rows are empty and only fluid particles are searched around, so a model made mostly of
+// boundary particles (a long flume, rock shells) costs what its fluid costs. Fixed capacity
+// per particle, grown when a particle overflows it.
 class PairList {
 public:
     // Builds the list; `radius` includes the skin.

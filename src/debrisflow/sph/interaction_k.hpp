@@ -3,6 +3,7 @@
 #include "debrisflow/models/eos_tait_k.hpp"
 #include "debrisflow/neighbors/grid_view_k.hpp"
 #include "debrisflow/particles/particle_set.hpp"
+#include "debrisflow/sph/apparent_viscosity_k.hpp"
 #include "debrisflow/sph/pair_state_k.hpp"
 
 namespace debrisflow::sph {
@@ -137,8 +138,27 @@ FluidInteraction<K, V, D> make_gather(const PairTerms<K, V, D>& terms, neighbors
     return {terms, grid, gravity};
 }
 
-// SPS stress of fluid particle i (Dalrymple & Rogers 2006, eq. 11) from the SPH velocity
-// gradient grad v_i = sum m_j / rho_j (v_j - v_i) (x) grad W_ij. Writes tau / rho^2.
+// SPS stress tau / rho^2 of a fluid particle (Dalrymple & Rogers 2006, eq. 11) from its
+// symmetric velocity gradient S = d[0..6) (xx, yy, zz, xy, xz, yz; add_symmetric_gradient):
+// nu_t = (C_s dp)^2 |S|, |S| = sqrt(2 S:S).
+DF_HD inline void sps_tau(const Real d[6], Real smag, Real blin, Real inv_rho, Real t[6]) {
+    const Real sxx = d[0], syy = d[1], szz = d[2], sxy = d[3], sxz = d[4], syz = d[5];
+    const Real ss =
+        2 * (sxx * sxx + syy * syy + szz * szz) + 4 * (sxy * sxy + sxz * sxz + syz * syz);
+    const Real nu_t = smag * std::sqrt(ss);
+    const Real div = sxx + syy + szz;
+    const Real iso = -(Real(2) / 3) * nu_t * div - blin * ss;
+    t[0] = inv_rho * (2 * nu_t * sxx + iso);
+    t[1] = inv_rho * (2 * nu_t * sxy);
+    t[2] = inv_rho * (2 * nu_t * sxz);
+    t[3] = inv_rho * (2 * nu_t * syy + iso);
+    t[4] = inv_rho * (2 * nu_t * syz);
+    t[5] = inv_rho * (2 * nu_t * szz + iso);
+}
+
+// Gather form of the SPS stress of fluid particle i (device and gather paths) from the SPH
+// velocity gradient grad v_i = sum m_j / rho_j (v_j - v_i) (x) grad W_ij. The host path sums
+// the same terms over the half pair list (SphSolver::compute_sps_stress).
 template <class Kernel> struct SpsStress {
     particles::ParticleView pv;
     neighbors::GridView grid;
@@ -152,31 +172,12 @@ template <class Kernel> struct SpsStress {
         for (int k = 0; k < 6; ++k) t[k] = 0;
         if (!pv.is_fluid(i)) return;
         const Vec3 xi = pv.pos(i), vi = pv.vel(i);
-        Real g[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+        Real d[6] = {0, 0, 0, 0, 0, 0};
         grid.for_each_neighbor(i, xi, pv.x, pv.y, pv.z, [&](Index j, Vec3 r, Real r2) {
             const Vec3 gw = kernel.grad_over_r(std::sqrt(r2)) * r;
-            const Vec3 dv = pv.vel(j) - vi;
-            const Real vol = pv.mass[j] / pv.rho[j];
-            for (int a = 0; a < 3; ++a)
-                for (int b = 0; b < 3; ++b) g[a][b] += vol * dv[a] * gw[b];
+            add_symmetric_gradient(d, pv.mass[j] / pv.rho[j], pv.vel(j) - vi, gw);
         });
-        // S_ab = (g_ab + g_ba)/2 ; |S| = sqrt(2 S:S)
-        const Real sxx = g[0][0], syy = g[1][1], szz = g[2][2];
-        const Real sxy = Real(0.5) * (g[0][1] + g[1][0]);
-        const Real sxz = Real(0.5) * (g[0][2] + g[2][0]);
-        const Real syz = Real(0.5) * (g[1][2] + g[2][1]);
-        const Real ss =
-            2 * (sxx * sxx + syy * syy + szz * szz) + 4 * (sxy * sxy + sxz * sxz + syz * syz);
-        const Real nu_t = smag * std::sqrt(ss);
-        const Real div = sxx + syy + szz;
-        const Real iso = -(Real(2) / 3) * nu_t * div - blin * ss;
-        const Real inv_rho = 1 / pv.rho[i];
-        t[0] = inv_rho * (2 * nu_t * sxx + iso);
-        t[1] = inv_rho * (2 * nu_t * sxy);
-        t[2] = inv_rho * (2 * nu_t * sxz);
-        t[3] = inv_rho * (2 * nu_t * syy + iso);
-        t[4] = inv_rho * (2 * nu_t * syz);
-        t[5] = inv_rho * (2 * nu_t * szz + iso);
+        sps_tau(d, smag, blin, 1 / pv.rho[i], t);
     }
 };
 

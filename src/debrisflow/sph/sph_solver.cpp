@@ -51,22 +51,45 @@ void SphSolver::update_neighbors(bool allow_reorder) {
     ++list_builds_;
 }
 
-void SphSolver::compute_sps_stress() {
+void SphSolver::compute_sps_stress(bool pairs) {
     auto pv = set_.view();
     tau_.resize(6 * std::size_t(pv.n));
     const auto& v = std::get<models::LaminarSpsViscosity>(models_.viscosity);
     const auto gv = grid_.view();
+    const Real dp2 = params_.dp * params_.dp;
+    const Real smag = v.smagorinsky * v.smagorinsky * dp2, blin = Real(2) / 3 * v.blin * dp2;
+    Real* tau = tau_.data();
     std::visit(
         [&](const auto& kernel) {
             using K = std::decay_t<decltype(kernel)>;
-            const Real dp2 = params_.dp * params_.dp;
-            SpsStress<K> f{pv,
-                           gv,
-                           kernel,
-                           v.smagorinsky * v.smagorinsky * dp2,
-                           Real(2) / 3 * v.blin * dp2,
-                           tau_.data()};
-            exec::for_each(pv.n, f);
+            if (!pairs) {
+                exec::for_each(pv.n, SpsStress<K>{pv, gv, kernel, smag, blin, tau});
+                return;
+            }
+            // Half pair list: i gains vol_j (v_j - v_i) (x) grad W_ij and j the mirror term
+            // vol_i (v_j - v_i) (x) grad W_ij (fluid particles only).
+            const Real support2 = support_ * support_;
+            exec::for_each_pair_w<6>(
+                list_, pv.n, buffers_, [=](Index i) { return i; },
+                [=](Index, Index i, Index j, Real* di, Real* dj) {
+                    const bool fi = pv.is_fluid(i), fj = pv.is_fluid(j);
+                    if (!fi && !fj) return;
+                    const Vec3 r = gv.separation(pv.pos(i), pv.pos(j));
+                    const Real r2 = dot(r, r);
+                    if (r2 >= support2) return;
+                    const Vec3 gw = kernel.grad_over_r(std::sqrt(r2)) * r;
+                    const Vec3 dv = pv.vel(j) - pv.vel(i);
+                    if (fi) add_symmetric_gradient(di, pv.mass[j] / pv.rho[j], dv, gw);
+                    if (fj) add_symmetric_gradient(dj, pv.mass[i] / pv.rho[i], dv, gw);
+                },
+                [=](Index i, const Real* d) {
+                    Real* t = tau + 6 * i;
+                    if (!pv.is_fluid(i)) {
+                        for (int k = 0; k < 6; ++k) t[k] = 0;
+                        return;
+                    }
+                    sps_tau(d, smag, blin, 1 / pv.rho[i], t);
+                });
         },
         models_.kernel);
 }
@@ -152,7 +175,7 @@ template <class F> void SphSolver::with_pair_terms(F&& f, bool pairs) {
     update_pressure();
     update_viscosity(pairs);
     const bool sps = std::holds_alternative<models::LaminarSpsViscosity>(models_.viscosity);
-    if (sps) compute_sps_stress();
+    if (sps) compute_sps_stress(pairs);
     auto pv = set_.view();
     std::visit(
         [&](const auto& kernel, const auto& visc, const auto& diff) {

@@ -56,7 +56,7 @@ public:
 private:
     void update_pressure();
     Real boundary_min_density() const;
-    void compute_sps_stress();
+    void compute_sps_stress(bool pairs);
     // Per-particle apparent viscosity (generalised-Newtonian models; constant otherwise).
     // Apparent viscosities of a generalised-Newtonian fluid: over the half pair list (`pairs`)
     // or by a per-particle gather over the cell grid.
