@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Checks tools/papers/report.py's analyses on synthetic run outputs with known answers: surge
 means at the flume section, barrier peak / static, slit discharge peak and trapping, bore
-speed of the container case, and that the whole report renders."""
+speed of the container case, check-dam trapping efficiency and window, and that the whole report renders."""
 import os
 import subprocess
 import sys
@@ -11,6 +11,7 @@ import numpy as np
 
 root = sys.argv[1]
 sys.path.insert(0, os.path.join(root, "tools", "papers"))
+import check_dam  # noqa: E402
 import container  # noqa: E402
 import granular_flume  # noqa: E402
 import slit_dam  # noqa: E402
@@ -65,9 +66,21 @@ with tempfile.TemporaryDirectory() as d:
     write(run, "front", ["time [s]", "x_front [m]"], [t, 2.5 * t])
     speed, arrive = container.bore_speed(container.read_probe(run, "front"))
     assert abs(speed - 2.5) < 1e-6 and abs(arrive - 1.28) < 1e-3, (speed, arrive)
+    # Check dam: 2 kg reach the upstream plane and 0.2 kg pass the dam over a 3-6 s window.
+    run = os.path.join(d, "A_check_s1.18")
+    t6 = np.linspace(0, 6, 601)
+    up, down = 2 * np.clip(t6 - 3, 0, 3) / 3, 0.2 * np.clip(t6 - 3, 0, 3) / 3
+    write(run, "trapping", ["time [s]", "M_up [kg]", "M_down [kg]", "E [-]"],
+          [t6, up, down, 1 - down / np.maximum(up, 1e-12)])
+    with open(os.path.join(run, "case.toml"), "w") as f:
+        f.write('[[probe]]\nname = "trapping"\nwindow = [ 3.0, 6.0 ]\n')
+    c = check_dam.analyse(run)
+    assert abs(c["E"] - 0.9) < 1e-12 and abs(c["up"] - 2) < 1e-12, c
+    assert c["window"] == (3.0, 6.0), c
     # The whole report renders with what is there (and without the other runs).
     out = subprocess.run([sys.executable, os.path.join(root, "tools", "papers", "report.py"), d],
                          check=True, capture_output=True, text=True).stdout
     assert "| F30-10 | 2d | 510 / 20.4 kg" in out, out
     assert "| B30-10 | 2d |" in out and "| 10.0 |" in out and "| 11 (-9 %) |" in out, out
+    assert "| 1.18 | 0.900 | 2.00 / 0.20 | 3–6 |" in out and "+0 % vs exp." in out, out
 print("papers report: OK")

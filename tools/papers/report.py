@@ -12,12 +12,13 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 import baffles  # noqa: E402
+import check_dam  # noqa: E402
 import container  # noqa: E402
 import granular_flume  # noqa: E402
 import retaining_dam  # noqa: E402
 import slit_dam  # noqa: E402
 
-SECTIONS = (granular_flume, slit_dam, baffles, container, retaining_dam)
+SECTIONS = (granular_flume, slit_dam, baffles, check_dam, container, retaining_dam)
 
 
 def main():

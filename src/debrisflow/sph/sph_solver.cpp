@@ -354,6 +354,31 @@ time::DtLimit SphSolver::stable_dt() const {
         const Real dtf = params_.cfl * std::sqrt(h / amax);
         if (dtf < lim.dt) lim = {dtf, "force"};
     }
+    // When one particle holds the step far below its nominal value, say which and why.
+    const bool cfl_low = lim.limiter == "cfl" && cmax > Real(1.5) * params_.c0;
+    const bool force_low = lim.limiter == "force" && amax > 100 * norm(params_.gravity);
+    if (cfl_low || force_low) {
+        const auto& s = set_;
+        Index worst = -1;
+        for (Index i = 0; i < s.size(); ++i) {
+            if (s.kind[i] != std::uint8_t(particles::Kind::fluid)) continue;
+            const Real v = std::sqrt(s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
+            const Real a = std::sqrt(s.ax[i] * s.ax[i] + s.ay[i] * s.ay[i] + s.az[i] * s.az[i]);
+            if ((cfl_low && eos.sound_speed(s.rho[i]) + v >= cmax) || (force_low && a >= amax)) {
+                worst = i;
+                break;
+            }
+        }
+        if (worst >= 0)
+            lim.limiter += fmt::format(
+                " (fluid id {} at ({:.3g}, {:.3g}, {:.3g}) m: rho/rho0 {:.3f}, |v| {:.3g} m/s, "
+                "|a| {:.3g} m/s^2)",
+                s.id[worst], s.x[worst], s.y[worst], s.z[worst], s.rho[worst] / params_.rho0,
+                std::sqrt(s.vx[worst] * s.vx[worst] + s.vy[worst] * s.vy[worst] +
+                          s.vz[worst] * s.vz[worst]),
+                std::sqrt(s.ax[worst] * s.ax[worst] + s.ay[worst] * s.ay[worst] +
+                          s.az[worst] * s.az[worst]));
+    }
     const Real nu = max_kinematic_viscosity();
     if (nu > 0) {
         const Real dtv = Real(0.125) * h * h / nu; // Morris et al. 1997, eq. 19

@@ -1,0 +1,71 @@
+"""Section A of ../shared/reference/seed_experiments.md: trapping efficiency of a slit check dam
+(P1 slits) for s/d95 = 1.18, 1.36, 1.49, reduced slice (cases/papers/slit_check_dam_reduced.toml).
+E = 1 - M_down / M_up from the solid mass crossing a plane upstream and one just downstream of
+the dam over the counting window (the `trapping` probe). Runs: A_check_s1.18, _s1.36, _s1.49."""
+import os
+import re
+
+import numpy as np
+
+from common import read_probe, save_figure, status, table, wall_seconds
+
+RATIOS = (1.18, 1.36, 1.49)
+E_EXP = 0.900  # experiment at s/d95 = 1.18
+E_PAPER_RUNS = (0.786, 0.802, 0.810)  # the paper's SPH-DEM runs I/II/III at 1.18
+
+
+def window(run):
+    """The trapping probe's counting window [s] from the run's resolved case."""
+    path = os.path.join(run, "case.toml")
+    text = open(path).read() if os.path.exists(path) else ""
+    m = re.search(r"window\s*=\s*\[\s*([0-9.eE+-]+)\s*,\s*([0-9.eE+-]+)\s*\]", text)
+    return (float(m.group(1)), float(m.group(2))) if m else (float("nan"), float("nan"))
+
+
+def analyse(run):
+    """Final E and the masses counted over the window; None without a trapping probe."""
+    tr = read_probe(run, "trapping")
+    if not tr:
+        return None
+    return dict(t=tr["time [s]"], E_t=tr["E [-]"], E=float(tr["E [-]"][-1]),
+                up=float(tr["M_up [kg]"][-1]), down=float(tr["M_down [kg]"][-1]),
+                window=window(run), t_end=float(tr["time [s]"][-1]))
+
+
+def report(root, figures):
+    lines = ["### Slit check dam, trapping efficiency (section A)", ""]
+    found = {r: analyse(os.path.join(root, f"A_check_s{r}")) for r in RATIOS}
+    found = {r: a for r, a in found.items() if a is not None}
+    if not found:
+        return lines + ["A_check_s*: not run (`tools/papers/run_reduced.sh check`)", ""]
+    rows = []
+    for r, a in found.items():
+        run = os.path.join(root, f"A_check_s{r}")
+        paper = f"exp. {E_EXP}; runs {' / '.join(map(str, E_PAPER_RUNS))}" if r == 1.18 else \
+            "below the 1.18 value"
+        diff = f"{100 * (a['E'] / E_EXP - 1):+.0f} % vs exp." if r == 1.18 else ""
+        w0, w1 = a["window"]
+        rows.append([f"{r}", f"{a['E']:.3f}", f"{a['up']:.2f} / {a['down']:.2f}",
+                     f"{w0:g}–{min(w1, a['t_end']):g}", paper, diff,
+                     f"{wall_seconds(run) / 60:.0f} min, {status(run)}"])
+    lines += table(["s/d95", "E", "M_up / M_down [kg]", "window [s]", "paper", "diff.", "run"], rows)
+    lines.append("")
+    if figures:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(1, 2, figsize=(11, 4))
+        rs = sorted(found)
+        ax[0].plot(rs, [found[r]["E"] for r in rs], "o-", label="debrisflow, reduced slice")
+        ax[0].plot([1.18], [E_EXP], "ks", label="experiment")
+        ax[0].plot([1.18] * 3, E_PAPER_RUNS, "r^", label="paper SPH-DEM runs I–III")
+        ax[0].set(xlabel="s / d95", ylabel="trapping efficiency E", ylim=(0, 1.05),
+                  title="E vs relative slit width (P1)")
+        for r in rs:
+            a = found[r]
+            inside = a["t"] >= a["window"][0]
+            ax[1].plot(a["t"][inside], a["E_t"][inside], label=f"s/d95 = {r}")
+        ax[1].set(xlabel="t [s]", ylabel="E over the window so far", ylim=(0, 1.05),
+                  title="running trapping efficiency")
+        lines += save_figure(fig, ax, figures, "check_dam_trapping.png", "check dam trapping")
+    return lines
