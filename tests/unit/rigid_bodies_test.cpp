@@ -326,3 +326,34 @@ dt = 1e-3
     EXPECT_NEAR((vb.x - vg.x) / 2, 0.6, 0.006);    // 1 % on e
     EXPECT_GT(sim.grains().grains().pos[0].x, -1); // stayed in the domain
 }
+
+TEST(RigidBodies, VertexInsideAConvexEdgeLeavesByTheNearerFace) {
+    // A cube's corner sits inside the upstream edge of a slit post (x in [0, 0.05], y >= 0):
+    // 1 mm behind the upstream face x = 0 and 3 mm behind the slit face y = 0, with the cube's
+    // centre upstream and in the slit, so both faces see it. The way out is the nearer face:
+    // the contact pushes along -x with the 1 mm overlap (a linear spring: |F| = k_n delta per
+    // vertex), not along -y with 3 mm (which threw rocks across slit posts).
+    test::RigidRig rig;
+    rig.materials[0].kn = 1e5;
+    rig.materials[0].restitution = 1.0;
+    rig.materials[0].friction = 0;
+    const Vec3 centre{-0.019, -0.017, 0.15};
+    rig.add(test::RigidRig::box("rock", centre - Vec3{0.02, 0.02, 0.02},
+                                centre + Vec3{0.02, 0.02, 0.02}),
+            2650);
+    auto tri = [](Vec3 a, Vec3 b, Vec3 c) {
+        const Vec3 n = cross(b - a, c - a);
+        return dem::WallPrimitive{a, b, c, (1 / norm(n)) * n, dem::PrimitiveType::triangle, 0};
+    };
+    dem::Wall post;
+    post.name = "post";
+    rig.walls.add(post, {tri({0, 0, 0}, {0, 0.2, 0.3}, {0, 0.2, 0}), // upstream face, n = -x
+                         tri({0, 0, 0}, {0, 0, 0.3}, {0, 0.2, 0.3}),
+                         tri({0, 0, 0}, {0.05, 0, 0}, {0.05, 0, 0.3}), // slit face, n = -y
+                         tri({0, 0, 0}, {0.05, 0, 0.3}, {0, 0, 0.3})});
+    rig.start({0, 0, 0});
+    const Vec3 f = rig.solver->wall_force(0); // the rock's push on the post
+    EXPECT_EQ(rig.solver->contacts(), 2);     // the two corners at x = 0.001
+    EXPECT_NEAR(f.x, 2 * 1e5 * 0.001, 1e-6 * 1e5 * 0.001);
+    EXPECT_NEAR(f.y, 0, 1e-9);
+}

@@ -65,9 +65,27 @@ void BodyContacts::add(const dem::PairParams& p, const Hit& h, const BodyState& 
         lb->contact_force -= res.force;
         lb->contact_torque -= cross(h.point - b->pos, res.force);
     }
-    // Stiffness over mass of this contact, for the time step: k = 1.5 F_n / delta (Hertz).
-    if (h.delta > 0 && m_eff > 0)
-        max_rate_ = std::max(max_rate_, Real(1.5) * res.fn / h.delta / m_eff);
+    // Stiffness x compliance for the time step: k = 1.5 F_n / delta (Hertz), and the normal
+    // compliance of each body at the contact point, 1/m + (r x n) . I^-1 (r x n) (rotation
+    // makes a vertex contact of an elongated rock much softer in mass, stiffer in rate). Each
+    // body sums its contacts (a rock wedged in a pile or a slit oscillates at the sum); the
+    // step uses the largest sum (Gershgorin bound of the contact stiffness matrix).
+    if (h.delta > 0) {
+        auto compliance = [&](const BodyState& s) {
+            if (s.inv_mass == 0) return Real(0);
+            const Vec3 rn = cross(h.point - s.pos, h.n);
+            return s.inv_mass + dot(rn, s.inv_inertia_world(rn));
+        };
+        const Real pair_rate =
+            Real(1.5) * res.fn / h.delta * (compliance(a) + (b ? compliance(*b) : Real(0)));
+        const auto bump = [&](const BodyState& s) {
+            Real& r = rate_[std::size_t(&s - first_)];
+            r += pair_rate;
+            max_rate_ = std::max(max_rate_, r);
+        };
+        bump(a);
+        if (b) bump(*b);
+    }
     ++contacts_;
 }
 
@@ -76,6 +94,8 @@ Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<Bo
                            bool commit, Real horizon) {
     contacts_ = 0;
     max_rate_ = 0;
+    first_ = s.data();
+    rate_.assign(s.size(), 0);
     imminent_dt_ = std::numeric_limits<Real>::max();
     std::unordered_map<std::uint64_t, dem::ContactHistory> wall_next, body_next;
     // Body-wall: vertices and exact spheres against every active primitive.
@@ -95,7 +115,10 @@ Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<Bo
                                              : model.spheres[f - model.vertices.size()];
                 const Vec3 p = b.to_world(sp.center);
                 const Real reach = std::max(b.contact_radius, sp.radius);
-                // deepest hit per wall (and the primitive it is on)
+                // One hit per wall (and the primitive it is on). A sphere takes the deepest
+                // (its nearest face). A vertex takes the shallowest: inside a convex edge of a
+                // wall (the corner of a slit post) it is behind both faces, and only the nearer
+                // face is the way out; the deeper one would throw it across the edge.
                 std::vector<std::tuple<int, Hit, std::size_t>> best;
                 for (std::size_t pi = 0; pi < prims.size(); ++pi) {
                     const auto& w = prims[pi];
@@ -121,7 +144,8 @@ Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<Bo
                                            [&](const auto& e) { return std::get<0>(e) == w.wall; });
                     if (it == best.end())
                         best.emplace_back(w.wall, h, pi);
-                    else if (delta > std::get<1>(*it).delta)
+                    else if (vertex ? delta < std::get<1>(*it).delta
+                                    : delta > std::get<1>(*it).delta)
                         *it = {w.wall, h, pi};
                 }
                 for (const auto& [wall, h, pi] : best) {

@@ -23,7 +23,9 @@ public:
     BodyContacts(std::vector<dem::PairParams> table, int materials)
         : table_(std::move(table)), materials_(materials) {}
 
-    // Adds contact loads; returns the largest contact stiffness over mass (1/s^2) seen.
+    // Adds contact loads; returns the largest rate (1/s^2) over the bodies of the sum over
+    // their contacts of stiffness x normal compliance (1/m + (r x n).I^-1(r x n) of each side):
+    // omega^2 of the stiffest contact mode, bounded above (Gershgorin).
     // Features that are not touching but will within `horizon` seconds at their approach
     // speed set imminent_dt() to 0.1 x the impact duration at that speed, so that a fast
     // approach does not enter a stiff contact with a step sized for the free flight.
@@ -52,6 +54,8 @@ private:
     std::unordered_map<std::uint64_t, dem::ContactHistory> wall_hist_, body_hist_;
     long contacts_ = 0;
     Real max_rate_ = 0;
+    const BodyState* first_ = nullptr; // bodies of the current compute(), for rate_
+    std::vector<Real> rate_;           // summed contact stiffness x compliance per body [1/s^2]
     Real imminent_dt_ = 0;
     std::vector<Vec3> wall_force_, node_force_;
 };

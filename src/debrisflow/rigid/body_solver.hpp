@@ -88,9 +88,9 @@ public:
     const JointSet& joints() const { return joints_; }
     int find(const std::string& name) const; // -1 if absent
     long contacts() const { return contacts_.contacts(); }
-    // Force of all bodies on geometric wall w in the last evaluation [N].
     // Force of the bodies on the moving nodes of nodal walls (FEM surfaces), last evaluation.
     const std::vector<Vec3>& node_forces() const { return contacts_.node_forces(); }
+    // Force of all bodies on geometric wall w in the last evaluation [N].
     Vec3 wall_force(int w) const {
         const auto& f = contacts_.wall_forces();
         return std::size_t(w) < f.size() ? f[std::size_t(w)] : Vec3{};
