@@ -318,8 +318,8 @@ void BodySolver::check_health(Real t) const {
         if (finite && inside && wrapped >= 0)
             throw InstabilityError(fmt::format(
                 "at t = {:.6g} s: body '{}' crossed the periodic boundary in {} (at {:.4g} m); "
-                "rigid bodies do not wrap through periodic directions yet: keep them inside, "
-                "or remove them before with a sink",
+                "rigid bodies do not wrap through periodic directions yet, and outlets do not "
+                "remove them: keep them inside with walls (a catch basin)",
                 t, models_[b].name, "xyz"[wrapped], s.pos[wrapped]));
         if (finite && inside) continue;
         throw InstabilityError(fmt::format(
