@@ -259,6 +259,41 @@ region = { shape = "box", min = [0, 0, 0], max = [0.1, 0.1, 0.1] }
     EXPECT_NE(full.find("no room"), std::string::npos) << full;
 }
 
+// Mixed contact laws: a pair of materials with different laws needs a [[contact]] naming its
+// law (no default would be right), and dcdem has no restitution (its damping is damping_cn).
+TEST(DemGrains, MixedContactLawsNeedAContactTable) {
+    const std::string pile = R"([[grains]]
+name = "pile"
+material = "glass"
+count = 10
+diameter = 0.01
+region = { shape = "box", min = [0, 0, 0], max = [0.1, 0.1, 0.1] }
+)";
+    const std::string rock = R"([[material]]
+name = "rock"
+law = "dcdem"
+density = 2650
+youngs_modulus = 5e7
+)";
+    const std::string mixed = error_of(grains_case(pile + rock));
+    EXPECT_NE(mixed.find("material.1.law"), std::string::npos) << mixed;
+    EXPECT_NE(mixed.find("different contact laws"), std::string::npos) << mixed;
+    const std::string no_e = error_of(grains_case(pile + rock + R"([[contact]]
+materials = ["glass", "rock"]
+law = "linear"
+)"));
+    EXPECT_NE(no_e.find("restitution"), std::string::npos) << no_e;
+    EXPECT_NE(no_e.find("dcdem material has no restitution"), std::string::npos) << no_e;
+    EXPECT_EQ(error_of(grains_case(pile + rock + R"([[contact]]
+materials = ["glass", "rock"]
+law = "linear"
+restitution = 0.2
+)")),
+              "");
+    const std::string dcdem_e = error_of(grains_case(pile + rock + "restitution = 0.3\n"));
+    EXPECT_NE(dcdem_e.find("not a parameter of the dcdem law"), std::string::npos) << dcdem_e;
+}
+
 // An STL floor made of a fan of eight triangles around a vertex: a sphere resting exactly on
 // the shared vertex, and one on a shared edge, each rest on a single contact.
 TEST(DemGrains, StlWallSharedVertexAndEdgeCountedOnce) {

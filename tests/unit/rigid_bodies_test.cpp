@@ -357,3 +357,33 @@ TEST(RigidBodies, VertexInsideAConvexEdgeLeavesByTheNearerFace) {
     EXPECT_NEAR(f.x, 2 * 1e5 * 0.001, 1e-6 * 1e5 * 0.001);
     EXPECT_NEAR(f.y, 0, 1e-9);
 }
+
+TEST(RigidBodies, BodyLeavingTheDomainIsReportedWithWhatThrewIt) {
+    // A cube released 5 mm into a floor (linear springs, k_n = 1e5 N/m per corner: 500 N each)
+    // is thrown up and out of a 0.3 m high domain. The message names the body, the largest
+    // contact load (the four corners, 2000 N) and the wall that gave it.
+    test::RigidRig rig;
+    rig.spec.domain.hi.z = 0.3;
+    rig.materials[0].kn = 1e5;
+    rig.materials[0].restitution = 1.0;
+    rig.materials[0].friction = 0;
+    rig.add(test::RigidRig::box("rock", {-0.02, -0.02, -0.005}, {0.02, 0.02, 0.035}), 2650);
+    dem::Wall floor;
+    floor.name = "floor";
+    rig.walls.add(floor,
+                  {dem::WallPrimitive{{0, 0, 0}, {}, {}, {0, 0, 1}, dem::PrimitiveType::plane, 0}});
+    rig.start({0, 0, -9.81});
+    std::string message;
+    try {
+        for (int k = 0; k < 100000; ++k) {
+            rig.solver->step(1e-5);
+            rig.solver->check_health(1e-5 * (k + 1));
+        }
+    } catch (const InstabilityError& e) {
+        message = e.what();
+    }
+    EXPECT_NE(message.find("body left the domain"), std::string::npos) << message;
+    EXPECT_NE(message.find("contacts 2000 N at t = 0 s"), std::string::npos) << message;
+    EXPECT_NE(message.find("500 N, overlap 5 mm, with wall 'floor'"), std::string::npos) << message;
+    EXPECT_NE(message.find("fluid 0 N"), std::string::npos) << message;
+}

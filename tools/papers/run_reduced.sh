@@ -1,7 +1,8 @@
 #!/bin/bash
 # Runs the reduced variants of the paper cases (cases/papers/, docs/validation.md "Paper
-# reproductions") into runs/papers/<run>, JOBS runs at a time with one thread each (default 2),
-# skipping runs whose summary.json says they completed. Then regenerate the report with
+# reproductions") into runs/papers/<run>, JOBS runs at a time (default 2) with THREADS threads
+# each (default 1), skipping runs whose summary.json says they completed. Then regenerate the
+# report with
 #   /usr/bin/python3 tools/papers/report.py runs/papers --figures docs/img
 # Exits non-zero when a run fails (its output so far is kept). Also `ctest -L paper`.
 # Usage: tools/papers/run_reduced.sh [flume|slit|baffles|check|container|dam ...]
@@ -11,6 +12,7 @@ cd "$(dirname "$0")/../.."
 OUT=${OUT:-runs/papers}
 JOBS=${JOBS:-2}
 BIN=${BIN:-build/debrisflow}
+THREADS=${THREADS:-1}
 mkdir -p "$OUT"
 SOFT="--set material.0.kn=1e6 --set material.0.kt=1e6 --set material.1.kn=1e6 --set material.1.kt=1e6"
 P=cases/papers
@@ -70,14 +72,14 @@ one() { # NAME CASE ARGS...
     return
   fi
   local t0=$SECONDS
-  "$BIN" run "$case" --out "$OUT/$name" --threads 1 "$@" >"$OUT/$name.log" 2>&1
+  "$BIN" run "$case" --out "$OUT/$name" --threads "$THREADS" "$@" >"$OUT/$name.log" 2>&1
   local rc=$?
   rmdir "$OUT/$name.lock"
   echo "$name: exit $rc after $((SECONDS - t0)) s"
   return $rc
 }
 export -f one
-export OUT BIN
+export OUT BIN THREADS
 
 sections=${*:-flume slit baffles check container dam}
 for s in $sections; do list "$s"; done | xargs -P "$JOBS" -L 1 bash -c 'one "$@"' _

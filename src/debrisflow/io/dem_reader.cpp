@@ -23,6 +23,10 @@ dem::Material read_material(const ConfigTable& t) {
         m.poisson = t.real("poisson", 0.25);
         if (m.poisson < 0 || m.poisson >= 0.5) t.fail("poisson", "must be within [0, 0.5)");
     }
+    if (m.law == "dcdem" && t.has("restitution"))
+        t.fail("restitution",
+               "not a parameter of the dcdem law, which damps with damping_cn (Canelas et al. "
+               "2017); give a pair with another material its restitution in a [[contact]]");
     m.restitution = t.real("restitution", 0.5);
     if (!(m.restitution > 0 && m.restitution <= 1)) t.fail("restitution", "must be within (0, 1]");
     m.friction = t.real("friction", 0.5);
@@ -190,18 +194,52 @@ FeedSpec read_feed(const ConfigTable& t, const CaseSpec& c) {
     return f;
 }
 
+// Two materials with different contact laws meet under the law of a [[contact]] that names
+// them (none would be the right default); a dcdem material has no restitution, so such a
+// contact of another law must give one.
+void check_mixed_laws(const std::vector<dem::Material>& mats,
+                      const std::vector<dem::PairOverride>& overrides,
+                      const std::vector<ConfigTable>& material_tables,
+                      const std::vector<ConfigTable>& contact_tables) {
+    for (std::size_t j = 0; j < mats.size(); ++j)
+        for (std::size_t i = 0; i < j; ++i) {
+            const dem::Material &a = mats[i], &b = mats[j];
+            const dem::PairOverride* o = nullptr;
+            std::size_t k = 0;
+            for (std::size_t n = 0; n < overrides.size(); ++n)
+                if ((overrides[n].a == a.name && overrides[n].b == b.name) ||
+                    (overrides[n].a == b.name && overrides[n].b == a.name))
+                    o = &overrides[n], k = n;
+            if (a.law != b.law && !(o && o->law))
+                material_tables[j].fail(
+                    "law", fmt::format("material \"{}\" ({}) and \"{}\" ({}) have different "
+                                       "contact laws: add a [[contact]] with materials = "
+                                       "[\"{}\", \"{}\"] and the law of their pair",
+                                       b.name, b.law, a.name, a.law, a.name, b.name));
+            const std::string law = o && o->law ? *o->law : a.law;
+            if (law != "dcdem" && (a.law == "dcdem" || b.law == "dcdem") && !o->restitution)
+                contact_tables[k].fail("restitution",
+                                       fmt::format("required: the pair \"{}\"-\"{}\" uses {}, and "
+                                                   "the dcdem material has no restitution",
+                                                   a.name, b.name, law));
+        }
+}
+
 } // namespace
 
 void read_dem(const ConfigTable& root, CaseSpec& c) {
-    for (const auto& t : root.tables("material")) {
+    const auto material_tables = root.tables("material");
+    for (const auto& t : material_tables) {
         c.dem.materials.push_back(read_material(t));
         for (std::size_t i = 0; i + 1 < c.dem.materials.size(); ++i)
             if (c.dem.materials[i].name == c.dem.materials.back().name)
                 t.fail("name", "two materials are named \"" + c.dem.materials[i].name + "\"");
     }
     if (c.dem.materials.size() > 250) root.fail("material", "at most 250 materials");
-    for (const auto& t : root.tables("contact"))
+    const auto contact_tables = root.tables("contact");
+    for (const auto& t : contact_tables)
         c.dem.overrides.push_back(read_contact(t, c.dem.materials));
+    check_mixed_laws(c.dem.materials, c.dem.overrides, material_tables, contact_tables);
     for (const auto& t : root.tables("grains")) {
         c.dem.grains.push_back(read_grains(t, c));
         if (c.dem.materials.empty()) t.fail("material", "define a [[material]] first");

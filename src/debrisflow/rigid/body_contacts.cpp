@@ -53,7 +53,7 @@ std::uint64_t key(std::uint64_t a, std::uint64_t b, std::uint64_t c) {
 } // namespace
 
 void BodyContacts::add(const dem::PairParams& p, const Hit& h, const BodyState& a,
-                       const BodyState* b, Vec3 wall_velocity, Real r_eff, Real m_eff,
+                       const BodyState* b, int wall, Vec3 wall_velocity, Real r_eff, Real m_eff,
                        BodyLoads& la, BodyLoads* lb, dem::ContactHistory& hist, Real elapsed) {
     const Vec3 vb = b ? b->point_velocity(h.point) : wall_velocity;
     const Vec3 vrel = a.point_velocity(h.point) - vb;
@@ -86,6 +86,13 @@ void BodyContacts::add(const dem::PairParams& p, const Hit& h, const BodyState& 
         bump(a);
         if (b) bump(*b);
     }
+    const int ia = int(&a - first_), ib = b ? int(b - first_) : -1;
+    const auto note = [&](int self, int other) {
+        StrongestContact& sc = strongest_[std::size_t(self)];
+        if (res.fn > sc.fn) sc = {other < 0 ? wall : -1, other, res.fn, h.delta, h.point};
+    };
+    note(ia, ib);
+    if (b) note(ib, ia);
     ++contacts_;
 }
 
@@ -96,6 +103,7 @@ Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<Bo
     max_rate_ = 0;
     first_ = s.data();
     rate_.assign(s.size(), 0);
+    strongest_.assign(s.size(), StrongestContact{});
     imminent_dt_ = std::numeric_limits<Real>::max();
     std::unordered_map<std::uint64_t, dem::ContactHistory> wall_next, body_next;
     // Body-wall: vertices and exact spheres against every active primitive.
@@ -164,7 +172,7 @@ Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<Bo
                         bw = dem::barycentric(dem::closest_point(pr, h.point), pr.a, pr.b, pr.c);
                         vw = dem::blend(nc, walls->nodes().v.data(), bw);
                     }
-                    add(pair(b.material, wm), h, b, nullptr, vw,
+                    add(pair(b.material, wm), h, b, nullptr, wall, vw,
                         vertex ? b.contact_radius : sp.radius, b.mass, loads[bi], nullptr, hist,
                         elapsed);
                     const Vec3 reaction = before - loads[bi].contact_force;
@@ -254,8 +262,9 @@ Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<Bo
                             auto hit = body_hist_.find(k);
                             dem::ContactHistory hist =
                                 hit != body_hist_.end() ? hit->second : dem::ContactHistory{};
-                            add(pair(A.material, B.material), h, A, &B, {}, a.r * b.r / (a.r + b.r),
-                                m_eff, loads[a.body], &loads[b.body], hist, elapsed);
+                            add(pair(A.material, B.material), h, A, &B, -1, {},
+                                a.r * b.r / (a.r + b.r), m_eff, loads[a.body], &loads[b.body], hist,
+                                elapsed);
                             body_next[k] = hist;
                         }
                     }

@@ -3,6 +3,7 @@
 #include "debrisflow/dem/wall_set.hpp"
 #include "debrisflow/rigid/body_model.hpp"
 #include "debrisflow/rigid/body_state.hpp"
+#include "debrisflow/rigid/load_recorder.hpp"
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
@@ -38,6 +39,8 @@ public:
     const std::vector<Vec3>& wall_forces() const { return wall_force_; }
     // Force of the bodies on each moving node of nodal walls (dem::WallSet::nodes()) [N].
     const std::vector<Vec3>& node_forces() const { return node_force_; }
+    // Strongest single contact of each body in the last evaluation.
+    const std::vector<StrongestContact>& strongest() const { return strongest_; }
 
 private:
     struct Hit {
@@ -45,7 +48,7 @@ private:
         Vec3 n, point;
     };
     void add(const dem::PairParams& p, const Hit& h, const BodyState& a, const BodyState* b,
-             Vec3 wall_velocity, Real r_eff, Real m_eff, BodyLoads& la, BodyLoads* lb,
+             int wall, Vec3 wall_velocity, Real r_eff, Real m_eff, BodyLoads& la, BodyLoads* lb,
              dem::ContactHistory& hist, Real elapsed);
     const dem::PairParams& pair(int a, int b) const { return table_[a * materials_ + b]; }
 
@@ -58,6 +61,7 @@ private:
     std::vector<Real> rate_;           // summed contact stiffness x compliance per body [1/s^2]
     Real imminent_dt_ = 0;
     std::vector<Vec3> wall_force_, node_force_;
+    std::vector<StrongestContact> strongest_;
 };
 
 } // namespace debrisflow::rigid

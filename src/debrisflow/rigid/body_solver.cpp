@@ -175,6 +175,7 @@ void BodySolver::compute_forces() {
     max_contact_rate_ =
         contacts_.compute(bodies_, models_, walls_, loads_, elapsed_, commit_next_, horizon);
     joints_.add_spring_loads(bodies_, loads_);
+    recorder_.record(t_, loads_, contacts_.strongest());
     if (pending_kick_ > 0) {
         const Real h = pending_kick_;
         pending_kick_ = 0;
@@ -322,11 +323,16 @@ void BodySolver::check_health(Real t) const {
                 "remove them: keep them inside with walls (a catch basin)",
                 t, models_[b].name, "xyz"[wrapped], s.pos[wrapped]));
         if (finite && inside) continue;
+        std::vector<std::string> wall_names, body_names;
+        if (walls_)
+            for (const auto& w : walls_->walls()) wall_names.push_back(w.name);
+        for (const auto& m : models_) body_names.push_back(m.name);
         throw InstabilityError(fmt::format(
-            "{} at t = {:.6g} s: body '{}' at ({:.4g}, {:.4g}, {:.4g}) m, velocity ({:.4g}, "
-            "{:.4g}, {:.4g}) m/s",
+            "{} at t = {:.6g} s: body '{}' ({:.3g} kg) at ({:.4g}, {:.4g}, {:.4g}) m, velocity "
+            "({:.4g}, {:.4g}, {:.4g}) m/s; {}",
             finite ? "body left the domain" : "non-finite body state (NaN/Inf)", t, models_[b].name,
-            s.pos.x, s.pos.y, s.pos.z, s.vel.x, s.vel.y, s.vel.z));
+            s.mass, s.pos.x, s.pos.y, s.pos.z, s.vel.x, s.vel.y, s.vel.z,
+            recorder_.describe(b, s.mass, wall_names, body_names)));
     }
 }
 

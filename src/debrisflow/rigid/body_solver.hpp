@@ -133,6 +133,7 @@ private:
     Real max_contact_rate_ = 0;
     Real last_dt_ = 0; // size of the last step taken
     double t_forces_ = 0, t_integrate_ = 0;
+    LoadRecorder recorder_{Real(0.05)}; // recent peak loads, for the failure message
 };
 
 } // namespace debrisflow::rigid
