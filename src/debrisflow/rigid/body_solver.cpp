@@ -323,17 +323,34 @@ void BodySolver::check_health(Real t) const {
                 "remove them: keep them inside with walls (a catch basin)",
                 t, models_[b].name, "xyz"[wrapped], s.pos[wrapped]));
         if (finite && inside) continue;
-        std::vector<std::string> wall_names, body_names;
-        if (walls_)
-            for (const auto& w : walls_->walls()) wall_names.push_back(w.name);
-        for (const auto& m : models_) body_names.push_back(m.name);
         throw InstabilityError(fmt::format(
             "{} at t = {:.6g} s: body '{}' ({:.3g} kg) at ({:.4g}, {:.4g}, {:.4g}) m, velocity "
             "({:.4g}, {:.4g}, {:.4g}) m/s; {}",
             finite ? "body left the domain" : "non-finite body state (NaN/Inf)", t, models_[b].name,
-            s.mass, s.pos.x, s.pos.y, s.pos.z, s.vel.x, s.vel.y, s.vel.z,
-            recorder_.describe(b, s.mass, wall_names, body_names)));
+            s.mass, s.pos.x, s.pos.y, s.pos.z, s.vel.x, s.vel.y, s.vel.z, describe_loads(b)));
     }
+}
+
+std::string BodySolver::describe_loads(std::size_t b) const {
+    std::vector<std::string> wall_names, body_names;
+    if (walls_)
+        for (const auto& w : walls_->walls()) wall_names.push_back(w.name);
+    for (const auto& m : models_) body_names.push_back(m.name);
+    return recorder_.describe(b, bodies_[b].mass, wall_names, body_names);
+}
+
+std::string BodySolver::diagnose() const {
+    std::size_t fastest = bodies_.size();
+    Real v2 = -1;
+    for (std::size_t b = 0; b < bodies_.size(); ++b)
+        if (bodies_[b].motion == Motion::free && dot(bodies_[b].vel, bodies_[b].vel) > v2)
+            fastest = b, v2 = dot(bodies_[b].vel, bodies_[b].vel);
+    if (fastest == bodies_.size()) return {};
+    const BodyState& s = bodies_[fastest];
+    return fmt::format("fastest body '{}' ({:.3g} kg) at ({:.4g}, {:.4g}, {:.4g}) m, velocity "
+                       "({:.4g}, {:.4g}, {:.4g}) m/s; {}",
+                       models_[fastest].name, s.mass, s.pos.x, s.pos.y, s.pos.z, s.vel.x, s.vel.y,
+                       s.vel.z, describe_loads(fastest));
 }
 
 void BodySolver::add_timings(time::Timings& t) const {

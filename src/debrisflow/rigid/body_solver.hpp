@@ -71,6 +71,7 @@ public:
     void verlet_step(Real dt, bool euler) override;
     time::DtLimit stable_dt() const override;
     void check_health(Real t) const override;
+    std::string diagnose() const override; // the fastest body and its recent peak loads
     void add_timings(time::Timings& t) const override;
 
     // Adds a body during the run (a rock feed); with a fluid attached, its shell points become
@@ -109,6 +110,7 @@ private:
     static void move_prescribed(BodyState& s, const BodyModel& m, Real h, Real t_mid);
     void constrain(Real dt); // joints and locks
     Vec3 total_force(int b) const;
+    std::string describe_loads(std::size_t b) const; // recent peak loads of body b
     Vec3 total_torque(int b) const;
 
     RigidParams params_;

@@ -80,7 +80,15 @@ RunResult Integrator::run(Real t0, Real t_end) {
             call_hooks(Hook::after_neighbors, info);
             for (Phase* p : phases_) p->compute_forces();
             call_hooks(Hook::after_forces, info);
-            for (Phase* p : phases_) p->check_health(info.t);
+            try {
+                for (Phase* p : phases_) p->check_health(info.t);
+            } catch (const InstabilityError& e) {
+                std::string message = e.what();
+                for (const Phase* p : phases_)
+                    if (const std::string d = p->diagnose(); !d.empty())
+                        message += fmt::format("\n  {}: {}", p->name(), d);
+                throw InstabilityError(message);
+            }
             call_hooks(Hook::step_end, info);
             info.last = !(info.t < t_end - Real(1e-12) * (1 + t_end));
             notify_observers(info, info.last);

@@ -34,6 +34,10 @@ public:
     virtual DtLimit stable_dt() const = 0;
     // Throws InstabilityError when the state is no longer physical.
     virtual void check_health(Real t) const = 0;
+    // What this phase saw recently, appended to an instability raised by any phase (a rigid
+    // body's shell particle leaving the domain is caught by the SPH phase; the rigid phase
+    // says which body moves fastest and what pushed it). Empty: nothing to add.
+    virtual std::string diagnose() const { return {}; }
     virtual void add_timings(Timings& t) const = 0;
 };
 
