@@ -392,3 +392,48 @@ TEST(RigidBodies, BodyLeavingTheDomainIsReportedWithWhatThrewIt) {
     EXPECT_NE(d.find("fastest body 'rock'"), std::string::npos) << d;
     EXPECT_NE(d.find("contacts 2000 N at t = 0 s"), std::string::npos) << d;
 }
+
+TEST(RigidBodies, VertexInFrontOfAPostKeepsItsSideWhenTheCentrePassesTheFace) {
+    // A cube tilted 50 degrees about y rests over the upstream edge of a post (x in [0, 0.05],
+    // top z = 0.3): its lowest corners hang 2 mm below the top, 2.5 mm upstream of the centre.
+    // With the centre 1 mm in front of the upstream face x = 0 the corners are 3.5 mm in front
+    // of it (within the 4 mm contact reach): no contact. Moved 2 mm downstream, the centre is
+    // past the face but the corners are still 1.5 mm in front, outside the post: still no
+    // contact (the centre's side of the face threw rocks out of the check dam). Moved 3 mm
+    // further, the corners are 1.5 mm inside the post through its upstream face, and the
+    // contact pushes them back upstream (linear springs: 2 x k_n x 1.5 mm on the post).
+    test::RigidRig rig;
+    rig.materials[0].kn = 1e5;
+    rig.materials[0].restitution = 1.0;
+    rig.materials[0].friction = 0;
+    const Real a = 0.02, angle = 50 * 3.14159265358979 / 180;
+    const Real drop = a * (std::cos(angle) + std::sin(angle)); // centre to lowest corner in z
+    const Real lead = a * (std::cos(angle) - std::sin(angle)); // and in x (< 0: upstream)
+    const Vec3 centre{-0.001, 0.1, 0.298 + drop};
+    rig.add(test::RigidRig::box("rock", centre - Vec3{a, a, a}, centre + Vec3{a, a, a}), 2650);
+    rig.bodies[0].q = rigid::from_rotation_vector(Vec3{0, angle, 0});
+    auto tri = [](Vec3 p, Vec3 q, Vec3 r) {
+        const Vec3 n = cross(q - p, r - p);
+        return dem::WallPrimitive{p, q, r, (1 / norm(n)) * n, dem::PrimitiveType::triangle, 0};
+    };
+    dem::Wall post;
+    post.name = "post";
+    rig.walls.add(post, {tri({0, 0, 0}, {0, 0.2, 0.3}, {0, 0.2, 0}), // upstream face, n = -x
+                         tri({0, 0, 0}, {0, 0, 0.3}, {0, 0.2, 0.3}),
+                         tri({0, 0, 0.3}, {0.05, 0, 0.3}, {0.05, 0.2, 0.3}), // top, n = +z
+                         tri({0, 0, 0.3}, {0.05, 0.2, 0.3}, {0, 0.2, 0.3})});
+    rig.start({0, 0, 0});
+    ASSERT_NEAR(rig.body(0).to_world(Vec3{a, a, -a}).x, -0.001 + lead, 1e-9); // a lowest corner
+    EXPECT_NEAR(lead, -0.00246, 1e-5);
+    EXPECT_EQ(rig.solver->contacts(), 0);
+    rig.body(0).pos.x += 0.002; // centre past the face, corners still in front
+    rig.solver->compute_forces();
+    EXPECT_EQ(rig.solver->contacts(), 0);
+    EXPECT_NEAR(norm(rig.solver->wall_force(0)), 0, 1e-12);
+    rig.body(0).pos.x += 0.003; // corners 1.5 mm into the post through its upstream face
+    rig.solver->compute_forces();
+    const Real depth = 0.004 + lead;
+    EXPECT_EQ(rig.solver->contacts(), 2);
+    EXPECT_NEAR(rig.solver->wall_force(0).x, 2 * 1e5 * depth, 1e-6);
+    EXPECT_NEAR(rig.solver->wall_force(0).z, 0, 1e-9);
+}

@@ -9,34 +9,29 @@ namespace debrisflow::rigid {
 namespace {
 
 // Signed gap (< 0: overlap) and contact normal (from the wall to the body) of a sphere of
-// radius r >= 0 (r = 0: a vertex) at p against a wall primitive. `inside` is a point of the
-// body, which tells a vertex which side of a triangle it is on; vertices deeper than `reach`
-// behind a triangle, or whose foot is off it, do not count.
-bool gap_to(const dem::WallPrimitive& w, Vec3 p, Real r, Vec3 inside, Real reach, Vec3& n,
-            Real& gap) {
+// radius r > 0 at p against a wall primitive.
+bool sphere_gap(const dem::WallPrimitive& w, Vec3 p, Real r, Vec3& n, Real& gap) {
     if (w.type == dem::PrimitiveType::plane) {
         n = w.n;
         gap = dot(p - w.a, w.n) - r;
         return true;
     }
-    if (r > 0) {
-        const Vec3 q = dem::closest_on_triangle(p, w.a, w.b, w.c);
-        const Vec3 d = p - q;
-        const Real dist = norm(d);
-        if (dist == 0) return false;
-        n = (1 / dist) * d;
-        gap = dist - r;
-        return true;
-    }
-    const Vec3 side = dot(inside - w.a, w.n) >= 0 ? w.n : -w.n;
-    const Real s = dot(p - w.a, side);
-    if (s < -reach) return false;
-    const Vec3 foot = p - s * side;
-    const Vec3 q = dem::closest_on_triangle(foot, w.a, w.b, w.c);
-    if (dot(q - foot, q - foot) > Real(1e-18) + Real(1e-12) * reach * reach) return false;
-    n = side;
-    gap = s;
+    const Vec3 q = dem::closest_on_triangle(p, w.a, w.b, w.c);
+    const Vec3 d = p - q;
+    const Real dist = norm(d);
+    if (dist == 0) return false;
+    n = (1 / dist) * d;
+    gap = dist - r;
     return true;
+}
+
+// Distance of a vertex at p from the plane of triangle w along its normal, when the vertex's
+// foot lies on the triangle (otherwise the triangle does not see the vertex).
+bool vertex_over_triangle(const dem::WallPrimitive& w, Vec3 p, Real reach, Real& along_n) {
+    along_n = dot(p - w.a, w.n);
+    const Vec3 foot = p - along_n * w.n;
+    const Vec3 q = dem::closest_on_triangle(foot, w.a, w.b, w.c);
+    return dot(q - foot, q - foot) <= Real(1e-18) + Real(1e-12) * reach * reach;
 }
 
 // Duration of a Hertz impact at approach speed v (Johnson 1985, eq. 11.24):
@@ -106,6 +101,7 @@ Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<Bo
     strongest_.assign(s.size(), StrongestContact{});
     imminent_dt_ = std::numeric_limits<Real>::max();
     std::unordered_map<std::uint64_t, dem::ContactHistory> wall_next, body_next;
+    std::unordered_map<SideKey, std::int8_t, SideKeyHash> side_next;
     // Body-wall: vertices and exact spheres against every active primitive.
     wall_force_.assign(walls ? walls->walls().size() : 0, Vec3{});
     node_force_.assign(walls ? walls->nodes().x.size() : 0, Vec3{});
@@ -133,7 +129,26 @@ Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<Bo
                     if (!wl[w.wall].active) continue;
                     Vec3 n;
                     Real gap;
-                    if (!gap_to(w, p, sp.radius, b.pos, reach, n, gap)) continue;
+                    if (!vertex || w.type == dem::PrimitiveType::plane) {
+                        if (!sphere_gap(w, p, sp.radius, n, gap)) continue;
+                    } else {
+                        // A vertex over a triangle: which side is outside? The side it was on
+                        // when it came within reach of the triangle, remembered while it stays
+                        // within reach (the body's centre tells only at first sight: a rock
+                        // over a post's edge has its centre past the upstream face while a
+                        // vertex still hangs in front of it). Deeper than reach: not seen.
+                        Real along_n;
+                        if (!vertex_over_triangle(w, p, reach, along_n)) continue;
+                        int side = dot(b.pos - w.a, w.n) >= 0 ? 1 : -1;
+                        if (std::fabs(along_n) <= reach) {
+                            const SideKey k{std::uint32_t(bi), std::uint32_t(f), pi};
+                            if (const auto it = side_.find(k); it != side_.end()) side = it->second;
+                            side_next[k] = std::int8_t(side);
+                        }
+                        n = Real(side) * w.n;
+                        gap = Real(side) * along_n;
+                        if (gap < -reach) continue;
+                    }
                     if (gap >= 0) { // not touching: does it touch within the horizon?
                         const Real vn = -dot(b.point_velocity(p) - wl[w.wall].velocity, n);
                         if (vn > 0 && gap < vn * horizon) {
@@ -273,6 +288,7 @@ Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<Bo
     if (commit) {
         wall_hist_.swap(wall_next);
         body_hist_.swap(body_next);
+        side_.swap(side_next);
     }
     return max_rate_;
 }

@@ -13,8 +13,9 @@ namespace debrisflow::rigid {
 // Contacts of rigid bodies with the DEM contact laws (dem::resolve_contact):
 //  - smooth, geometry-exact body-wall contact: every contact vertex (Hertz radius
 //    BodyState::contact_radius) and exact sphere of a body against the planes and triangles of
-//    the geometric walls; one contact per feature and wall (the deepest), so a face resting on
-//    a plane pushes at its corners whatever the SPH resolution;
+//    the geometric walls; one contact per feature and wall (a sphere's deepest, a vertex's
+//    shallowest), so a face resting on a plane pushes at its corners whatever the SPH
+//    resolution; a vertex keeps the side of a triangle it came from while within reach;
 //  - distributed body-body contact between the surface sample spheres of different bodies
 //    (Canelas et al. 2017: each pair of touching samples is one contact of the two bodies).
 // Tangential history is kept per contact; evaluations inside a step use the history of the
@@ -55,6 +56,20 @@ private:
     std::vector<dem::PairParams> table_;
     int materials_;
     std::unordered_map<std::uint64_t, dem::ContactHistory> wall_hist_, body_hist_;
+    // Outside side (+1: along the triangle's normal, -1: against) of each vertex within
+    // contact reach of a triangle, by (body, vertex, primitive), from the last committed step.
+    struct SideKey {
+        std::uint32_t body, vertex;
+        std::size_t primitive;
+        bool operator==(const SideKey&) const = default;
+    };
+    struct SideKeyHash {
+        std::size_t operator()(const SideKey& k) const {
+            return (std::size_t(k.body) * 0x9E3779B97F4A7C15ull) ^
+                   (std::size_t(k.vertex) * 0xC2B2AE3D27D4EB4Full) ^ (k.primitive * 0x165667B1ull);
+        }
+    };
+    std::unordered_map<SideKey, std::int8_t, SideKeyHash> side_;
     long contacts_ = 0;
     Real max_rate_ = 0;
     const BodyState* first_ = nullptr; // bodies of the current compute(), for rate_
