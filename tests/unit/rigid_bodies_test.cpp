@@ -39,6 +39,12 @@ std::string write_box_stl(Real a, Real b, Real c) {
     return path.string();
 }
 
+// A wall triangle a, b, c with its normal (b - a) x (c - a) normalised.
+dem::WallPrimitive tri(Vec3 a, Vec3 b, Vec3 c) {
+    const Vec3 n = cross(b - a, c - a);
+    return dem::WallPrimitive{a, b, c, (1 / norm(n)) * n, dem::PrimitiveType::triangle, 0};
+}
+
 } // namespace
 
 TEST(RigidBodies, QuaternionEulerRoundTrip) {
@@ -341,10 +347,6 @@ TEST(RigidBodies, VertexInsideAConvexEdgeLeavesByTheNearerFace) {
     rig.add(test::RigidRig::box("rock", centre - Vec3{0.02, 0.02, 0.02},
                                 centre + Vec3{0.02, 0.02, 0.02}),
             2650);
-    auto tri = [](Vec3 a, Vec3 b, Vec3 c) {
-        const Vec3 n = cross(b - a, c - a);
-        return dem::WallPrimitive{a, b, c, (1 / norm(n)) * n, dem::PrimitiveType::triangle, 0};
-    };
     dem::Wall post;
     post.name = "post";
     rig.walls.add(post, {tri({0, 0, 0}, {0, 0.2, 0.3}, {0, 0.2, 0}), // upstream face, n = -x
@@ -412,10 +414,6 @@ TEST(RigidBodies, VertexInFrontOfAPostKeepsItsSideWhenTheCentrePassesTheFace) {
     const Vec3 centre{-0.001, 0.1, 0.298 + drop};
     rig.add(test::RigidRig::box("rock", centre - Vec3{a, a, a}, centre + Vec3{a, a, a}), 2650);
     rig.bodies[0].q = rigid::from_rotation_vector(Vec3{0, angle, 0});
-    auto tri = [](Vec3 p, Vec3 q, Vec3 r) {
-        const Vec3 n = cross(q - p, r - p);
-        return dem::WallPrimitive{p, q, r, (1 / norm(n)) * n, dem::PrimitiveType::triangle, 0};
-    };
     dem::Wall post;
     post.name = "post";
     rig.walls.add(post, {tri({0, 0, 0}, {0, 0.2, 0.3}, {0, 0.2, 0}), // upstream face, n = -x
