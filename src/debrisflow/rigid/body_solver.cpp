@@ -336,7 +336,7 @@ std::string BodySolver::describe_loads(std::size_t b) const {
     if (walls_)
         for (const auto& w : walls_->walls()) wall_names.push_back(w.name);
     for (const auto& m : models_) body_names.push_back(m.name);
-    return recorder_.describe(b, bodies_[b].mass, wall_names, body_names);
+    return recorder_.describe(b, bodies_[b].mass * norm(params_.gravity), wall_names, body_names);
 }
 
 std::string BodySolver::diagnose() const {

@@ -1,5 +1,4 @@
 #include "debrisflow/rigid/load_recorder.hpp"
-#include <algorithm>
 #include <fmt/format.h>
 
 namespace debrisflow::rigid {
@@ -24,17 +23,18 @@ void LoadRecorder::record(Real t, const std::vector<BodyLoads>& loads,
     }
 }
 
-std::string LoadRecorder::describe(std::size_t b, Real mass,
+std::string LoadRecorder::describe(std::size_t b, Real weight,
                                    const std::vector<std::string>& wall_names,
                                    const std::vector<std::string>& body_names) const {
     if (b >= current_.size()) return {};
     const Peak &c = current_[b], &p = previous_[b];
     const Peak& f = p.fluid > c.fluid ? p : c;
     const Peak& k = p.contact > c.contact ? p : c;
-    std::string s = fmt::format(
-        "largest loads on it over the last {:.3g} s (weight {:.3g} N): fluid {:.4g} N at t = "
-        "{:.6g} s, contacts {:.4g} N at t = {:.6g} s",
-        2 * window_, mass * 9.81, f.fluid, f.t_fluid, k.contact, k.t_contact);
+    std::string s =
+        fmt::format("largest loads on it over the last {:.3g}-{:.3g} s (weight {:.3g} N): fluid "
+                    "{:.4g} N at t = "
+                    "{:.6g} s, contacts {:.4g} N at t = {:.6g} s",
+                    window_, 2 * window_, weight, f.fluid, f.t_fluid, k.contact, k.t_contact);
     const StrongestContact& sc = k.at_contact;
     if (sc.wall >= 0 || sc.body >= 0) {
         const std::string partner =

@@ -21,9 +21,9 @@ public:
     explicit LoadRecorder(Real window) : window_(window) {}
     void record(Real t, const std::vector<BodyLoads>& loads,
                 const std::vector<StrongestContact>& strongest);
-    // "over the last ... s: largest fluid force ... N at t = ... s; ..." for body b of mass m
-    // (walls named by wall_names, bodies by body_names).
-    std::string describe(std::size_t b, Real mass, const std::vector<std::string>& wall_names,
+    // "over the last ... s: largest fluid force ... N at t = ... s; ..." for body b of weight
+    // `weight` [N] (walls named by wall_names, bodies by body_names).
+    std::string describe(std::size_t b, Real weight, const std::vector<std::string>& wall_names,
                          const std::vector<std::string>& body_names) const;
 
 private:
