@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Command-line contract: output layout, exit codes 2 (bad input) and 3 (unstable run, output
-# kept), error messages naming file:line:column and key.
+# Command-line contract: output layout, exit codes 2 (bad input), 3 (unstable run, output
+# kept) and 130 (stopped by a signal, output kept), error messages naming file:line:column and key.
 set -u
 exe="$1"; src="$2"; out="$3"
 rm -rf "$out"; mkdir -p "$out"
@@ -40,4 +40,20 @@ grep -q "badtype.toml:3:7: key 'time.end': expected a number" "$out/badtype.txt"
 grep -q "left the domain" "$out/unstable.txt" || fail "instability message: $(cat "$out/unstable.txt")"
 grep -q '"status": "unstable"' "$out/unstable/summary.json" || fail "unstable summary"
 [ -s "$out/unstable/vtk/particles.pvd" ] || fail "unstable run lost its output"
+# SIGTERM (or Ctrl-C) during a run: it stops after the current step (exit 130), keeping the
+# probes, frames and a summary that says so.
+"$exe" run "$demo" --out "$out/stopped" --set time.end=60 --threads 1 --quiet \
+    > "$out/stopped.txt" 2>&1 &
+pid=$!
+for _ in $(seq 600); do
+    [ -s "$out/stopped/vtk/particles_00000.vtu" ] && break
+    sleep 0.1
+done
+sleep 1
+kill -TERM $pid
+wait $pid; rc=$?
+[ $rc -eq 130 ] || fail "stopped run: exit $rc, expected 130: $(cat "$out/stopped.txt")"
+grep -q "stopped on request (signal 15)" "$out/stopped.txt" || fail "stop message: $(cat "$out/stopped.txt")"
+grep -q '"status": "interrupted"' "$out/stopped/summary.json" || fail "interrupted summary"
+[ "$(wc -l < "$out/stopped/probes/sensor1.csv")" -ge 3 ] || fail "stopped run lost its probe rows"
 echo "cli contract OK"

@@ -1,5 +1,6 @@
 // debrisflow command line: run and check case files.
 #include "debrisflow/app/simulation.hpp"
+#include "debrisflow/app/stop_request.hpp"
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/io/case_spec.hpp"
 #include <CLI/CLI.hpp>
@@ -123,11 +124,15 @@ int main(int argc, char** argv) {
         const io::CaseSpec spec = io::read_case(file, sets);
         if (out.empty()) out = "out/" + spec.name;
         app::Simulation sim(spec);
+        app::install_stop_handlers();
         sim.run({out, quiet, threads});
         return 0;
     } catch (const InputError& e) {
         std::cerr << "error: " << e.what() << "\n";
         return 2;
+    } catch (const InterruptedError& e) {
+        std::cerr << "debrisflow: " << e.what() << "; output so far kept in " << out << "\n";
+        return 130;
     } catch (const InstabilityError& e) {
         std::cerr << "error: the run went unstable: " << e.what() << "\n";
         return 3;

@@ -1,4 +1,5 @@
 #include "debrisflow/app/simulation.hpp"
+#include "debrisflow/app/stop_request.hpp"
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/exec/parallel.hpp"
 #include "debrisflow/io/vtk_writer.hpp"
@@ -344,6 +345,15 @@ io::RunReport Simulation::run(const RunOptions& opt) {
                               "particle-steps/s  wall {:.1f} s  ETA {:.0f} s{}",
                               s.t, s.step, s.dt, s.limiter, pss, wall, eta,
                               dem_ ? fmt::format("  contacts {}", dem_->contacts()) : ""));
+        for (auto& p : probes_) p->flush();
+    });
+    // Ctrl-C or SIGTERM: stop after this step and keep the output (app/stop_request.hpp).
+    integ.add_hook(time::Hook::step_end, [](const time::StepInfo& s) {
+        if (!stop_requested()) return;
+        const int sig = stop_signal();
+        throw InterruptedError(fmt::format("stopped on request{} at t = {:.6g} s (step {})",
+                                           sig ? fmt::format(" (signal {})", sig) : "", s.t,
+                                           s.step));
     });
 
     auto finish_stats = [&]() {
@@ -369,12 +379,13 @@ io::RunReport Simulation::run(const RunOptions& opt) {
         report.result = integ.run(t_, opt.until > 0 ? opt.until : spec_.t_end);
         t_ = report.result.t;
         finish_stats();
-    } catch (const InstabilityError& e) {
-        report.status = "unstable";
+    } catch (const RunStopped& e) {
+        const bool asked = dynamic_cast<const InterruptedError*>(&e) != nullptr;
+        report.status = asked ? "interrupted" : "unstable";
         report.message = e.what();
         report.result = integ.result();
         finish_stats();
-        log_.line(std::string("ERROR: run stopped: ") + e.what());
+        log_.line(std::string(asked ? "run " : "ERROR: run stopped: ") + e.what());
         if (files) {
             io::write_summary(opt.out_dir + "/summary.json", spec_, report, probes_);
             log_.line("output so far kept in " + opt.out_dir);

@@ -10,10 +10,22 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// A run that went unstable (NaN, particles leaving the domain, dt collapse). Exit code 3.
-class InstabilityError : public std::runtime_error {
+// A run that stopped before its end time; the output written so far is kept.
+class RunStopped : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
+};
+
+// A run that went unstable (NaN, particles leaving the domain, dt collapse). Exit code 3.
+class InstabilityError : public RunStopped {
+public:
+    using RunStopped::RunStopped;
+};
+
+// A run stopped on request (SIGINT / SIGTERM, app/stop_request.hpp). Exit code 130.
+class InterruptedError : public RunStopped {
+public:
+    using RunStopped::RunStopped;
 };
 
 } // namespace debrisflow

@@ -45,6 +45,11 @@ public:
     // Called after each sample with its values (field output).
     virtual void after_sample(Real /*t*/, const std::vector<Real>& /*values*/) {}
     void record(Real t, const ProbeContext& ctx);
+    // Writes the buffered rows to probes/<name>.csv (at each progress line, so that a run
+    // killed outright keeps its series up to then).
+    void flush() {
+        if (csv_.is_open()) csv_.flush();
+    }
     const std::vector<Real>& peaks() const { return peak_; }
     const std::vector<Real>& finals() const { return last_; }
     bool has_samples() const { return samples_ > 0; }

@@ -93,7 +93,7 @@ RunResult Integrator::run(Real t0, Real t_end) {
             info.last = !(info.t < t_end - Real(1e-12) * (1 + t_end));
             notify_observers(info, info.last);
         }
-    } catch (const InstabilityError&) {
+    } catch (const RunStopped&) {
         info.last = true;
         result_ = finish();
         notify_observers(info, true);

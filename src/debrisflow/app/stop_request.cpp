@@ -1,0 +1,38 @@
+#include "debrisflow/app/stop_request.hpp"
+#include <atomic>
+#include <csignal>
+
+namespace debrisflow::app {
+
+namespace {
+
+std::atomic<int> requested{-1}; // -1: none; otherwise the signal number (0: request_stop)
+static_assert(std::atomic<int>::is_always_lock_free, "used from a signal handler");
+
+extern "C" void on_stop_signal(int sig) {
+    requested.store(sig);
+    std::signal(sig, SIG_DFL); // a second Ctrl-C kills
+}
+
+} // namespace
+
+void install_stop_handlers() {
+    for (int sig : {SIGINT, SIGTERM})
+        if (std::signal(sig, on_stop_signal) == SIG_IGN)
+            std::signal(sig, SIG_IGN); // keep ignoring (a background job's SIGINT)
+}
+
+void request_stop() {
+    requested.store(0);
+}
+void clear_stop_request() {
+    requested.store(-1);
+}
+bool stop_requested() {
+    return requested.load() >= 0;
+}
+int stop_signal() {
+    return requested.load() > 0 ? requested.load() : 0;
+}
+
+} // namespace debrisflow::app
