@@ -349,11 +349,10 @@ io::RunReport Simulation::run(const RunOptions& opt) {
     });
     // Ctrl-C or SIGTERM: stop after this step and keep the output (app/stop_request.hpp).
     integ.add_hook(time::Hook::step_end, [](const time::StepInfo& s) {
-        if (!stop_requested()) return;
-        const int sig = stop_signal();
-        throw InterruptedError(fmt::format("stopped on request{} at t = {:.6g} s (step {})",
-                                           sig ? fmt::format(" (signal {})", sig) : "", s.t,
-                                           s.step));
+        if (const int sig = stop_signal())
+            throw InterruptedError(fmt::format("stopped on request (signal {}) at t = {:.6g} s "
+                                               "(step {})",
+                                               sig, s.t, s.step));
     });
 
     auto finish_stats = [&]() {

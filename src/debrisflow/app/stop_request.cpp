@@ -6,7 +6,7 @@ namespace debrisflow::app {
 
 namespace {
 
-std::atomic<int> requested{-1}; // -1: none; otherwise the signal number (0: request_stop)
+std::atomic<int> requested{0}; // the signal number, 0 while none has come
 static_assert(std::atomic<int>::is_always_lock_free, "used from a signal handler");
 
 extern "C" void on_stop_signal(int sig) {
@@ -22,17 +22,8 @@ void install_stop_handlers() {
             std::signal(sig, SIG_IGN); // keep ignoring (a background job's SIGINT)
 }
 
-void request_stop() {
-    requested.store(0);
-}
-void clear_stop_request() {
-    requested.store(-1);
-}
-bool stop_requested() {
-    return requested.load() >= 0;
-}
 int stop_signal() {
-    return requested.load() > 0 ? requested.load() : 0;
+    return requested.load();
 }
 
 } // namespace debrisflow::app

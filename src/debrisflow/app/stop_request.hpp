@@ -6,9 +6,6 @@ namespace debrisflow::app {
 // step with InterruptedError and the output so far (probes, frames, summary.json) is kept.
 // A second signal ends the process at once (the default action).
 void install_stop_handlers(); // SIGINT and SIGTERM
-void request_stop();          // what the handlers do (also for tests)
-void clear_stop_request();
-bool stop_requested();
-int stop_signal(); // the signal that asked, 0 for request_stop()
+int stop_signal();            // the signal that asked for a stop, 0 while none has
 
 } // namespace debrisflow::app
