@@ -40,7 +40,7 @@ list() {
     done
     ;;
   slit10) # section B, Type A SD10 (the paper's 93,747 grains of 5 mm) to 1.5 s, past the peak:
-    # not in the default list (56 min on 2 threads: THREADS=2 JOBS=1)
+    # not in the default list (2.2 h on 2 threads with the settling: THREADS=2 JOBS=1)
     echo "B_slitA_sd10 $P/slit_dam_dem/typeA.toml --set grains.0.diameter=0.005 --set grains.0.count=93747 --set time.end=1.5 --set probe.2.window=[0.0,1.5]"
     ;;
   baffles) # section B, SPH-DEM: slurry viscosity 0.1, 1, 5 m2/s

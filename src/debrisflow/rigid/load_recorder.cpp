@@ -32,8 +32,7 @@ std::string LoadRecorder::describe(std::size_t b, Real weight,
     const Peak& k = p.contact > c.contact ? p : c;
     std::string s =
         fmt::format("largest loads on it over the last {:.3g}-{:.3g} s (weight {:.3g} N): fluid "
-                    "{:.4g} N at t = "
-                    "{:.6g} s, contacts {:.4g} N at t = {:.6g} s",
+                    "{:.4g} N at t = {:.6g} s, contacts {:.4g} N at t = {:.6g} s",
                     window_, 2 * window_, weight, f.fluid, f.t_fluid, k.contact, k.t_contact);
     const StrongestContact& sc = k.at_contact;
     if (sc.wall >= 0 || sc.body >= 0) {
