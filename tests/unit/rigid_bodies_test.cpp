@@ -435,3 +435,32 @@ TEST(RigidBodies, VertexInFrontOfAPostKeepsItsSideWhenTheCentrePassesTheFace) {
     EXPECT_NEAR(rig.solver->wall_force(0).x, 2 * 1e5 * depth, 1e-6);
     EXPECT_NEAR(rig.solver->wall_force(0).z, 0, 1e-9);
 }
+
+TEST(RigidBodies, FastBodySeesAnImpactComingFromBeyondItsContactReach) {
+    // A 40 mm cube falls corner-first at 10 m/s onto a floor triangle. The contact search
+    // skips primitives out of every feature's reach (BodyContacts' bound-radius cull), but a
+    // primitive the body closes on within the horizon (3 ms before the first step: 30 mm)
+    // must stay in: with the lowest corner 20 mm above the floor (centre to floor 20 mm more
+    // than the bound radius, five times the 4 mm vertex reach) the step is cut for the impact;
+    // 50 mm above, the impact is beyond the horizon and the step is not cut.
+    for (const Real gap : {0.02, 0.05}) {
+        test::RigidRig rig;
+        rig.materials[0].kn = 1e5;
+        const Real a = 0.02, bound = a * std::sqrt(Real(3));
+        rig.add(test::RigidRig::box("rock", Vec3{-a, -a, -a}, Vec3{a, a, a}), 2650);
+        // Corner (1, 1, 1) turned to point straight down.
+        const Vec3 diag = (1 / std::sqrt(Real(3))) * Vec3{1, 1, 1}, down{0, 0, -1};
+        const Vec3 axis = cross(diag, down);
+        rig.bodies[0].q =
+            rigid::from_rotation_vector(std::acos(dot(diag, down)) / norm(axis) * axis);
+        rig.bodies[0].pos = {0, 0, bound + gap};
+        rig.bodies[0].vel = {0, 0, -10};
+        dem::Wall floor;
+        floor.name = "floor";
+        rig.walls.add(floor, {tri({-1, -1, 0}, {1, -1, 0}, {0, 1, 0})});
+        rig.start({0, 0, 0});
+        ASSERT_NEAR(rig.body(0).to_world(Vec3{a, a, a}).z, gap, 1e-9); // the corner's height
+        EXPECT_EQ(rig.solver->contacts(), 0);
+        EXPECT_EQ(rig.solver->stable_dt().limiter, gap < 0.03 ? "impact" : "none") << gap;
+    }
+}

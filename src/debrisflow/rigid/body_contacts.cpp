@@ -41,6 +41,34 @@ Real impact_duration(const dem::PairParams& p, Real r_eff, Real m_eff, Real v) {
     return Real(2.87) * std::pow(m_eff * m_eff / (r_eff * p.e_star * p.e_star * v), Real(0.2));
 }
 
+// The active primitives that any feature of body b can touch, or reach within the horizon:
+// a feature at p lies within R (the body's bound radius, sphere radii included) of the
+// centre, so its gap to a triangle is at least dist(centre, triangle) - R and to a plane at
+// least the centre's height - R. A primitive beyond R + the vertex reach + the closing
+// distance over the horizon gives no contact, no imminent contact and no side memory for
+// any feature, so dropping it changes nothing but the cost (features x primitives).
+std::vector<std::size_t> primitives_near(const dem::WallSet& walls, const BodyState& b,
+                                         const BodyModel& model, Real horizon) {
+    const auto& prims = walls.primitives();
+    const auto& wl = walls.walls();
+    const Real bound = model.bound_radius.x;
+    const Real spin = norm(b.omega()) * bound;
+    std::vector<std::size_t> near;
+    for (std::size_t pi = 0; pi < prims.size(); ++pi) {
+        const auto& w = prims[pi];
+        if (!wl[w.wall].active) continue;
+        const Real closing = (norm(b.vel - wl[w.wall].velocity) + spin) * horizon;
+        if (w.type == dem::PrimitiveType::plane) {
+            if (dot(b.pos - w.a, w.n) - bound > closing) continue;
+        } else {
+            const Vec3 d = b.pos - dem::closest_on_triangle(b.pos, w.a, w.b, w.c);
+            if (norm(d) - bound > b.contact_radius + closing) continue;
+        }
+        near.push_back(pi);
+    }
+    return near;
+}
+
 std::uint64_t key(std::uint64_t a, std::uint64_t b, std::uint64_t c) {
     return (a << 40) ^ (b << 16) ^ c;
 }
@@ -113,6 +141,7 @@ Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<Bo
             if (b.motion != Motion::free) continue;
             const BodyModel& model = m[bi];
             const std::size_t nf = model.vertices.size() + model.spheres.size();
+            const std::vector<std::size_t> near = primitives_near(*walls, b, model, horizon);
             for (std::size_t f = 0; f < nf; ++f) {
                 const bool vertex = f < model.vertices.size();
                 const BodySphere sp = vertex ? BodySphere{model.vertices[f], 0}
@@ -124,9 +153,8 @@ Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<Bo
                 // wall (the corner of a slit post) it is behind both faces, and only the nearer
                 // face is the way out; the deeper one would throw it across the edge.
                 std::vector<std::tuple<int, Hit, std::size_t>> best;
-                for (std::size_t pi = 0; pi < prims.size(); ++pi) {
+                for (const std::size_t pi : near) {
                     const auto& w = prims[pi];
-                    if (!wl[w.wall].active) continue;
                     Vec3 n;
                     Real gap;
                     if (!vertex || w.type == dem::PrimitiveType::plane) {
