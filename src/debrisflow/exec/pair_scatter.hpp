@@ -1,77 +1,50 @@
 #pragma once
 #include "debrisflow/core/vec3_k.hpp"
 #include "debrisflow/neighbors/pair_list.hpp"
-#include <algorithm>
+#include <cstdint>
 #include <omp.h>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace debrisflow::exec {
 
-// Per-thread accumulation buffers for symmetric pair loops: (x, y, z, scalar) per particle.
+// Per-thread accumulation buffers for symmetric pair loops: W values per particle.
 struct ScatterBuffers {
     std::vector<std::vector<Real>> per_thread;
 };
 
-// Runs pair(load(i), i, j, vec_i, s_i, out_j) over every pair of a half list, each pair once:
-// the pair adds particle i's contribution to (vec_i, s_i) and particle j's to out_j[0..3].
-// out(i, vec, s) then receives each particle's totals. Threads write their own buffers (no
-// atomics), which are summed at the end; load(i) fetches particle i's data once.
-template <class Load, class Pair, class Out>
-void for_each_pair(const neighbors::PairList& list, Index n, ScatterBuffers& buf, const Load& load,
-                   const Pair& pair, const Out& out) {
-    const int nt = omp_get_max_threads();
-    buf.per_thread.resize(std::size_t(nt));
-    for (auto& b : buf.per_thread) b.resize(4 * std::size_t(n));
-    const Index* nb = list.neighbors();
-#pragma omp parallel
-    {
-        Real* b = buf.per_thread[std::size_t(omp_get_thread_num())].data();
-        std::fill(b, b + 4 * std::size_t(n), Real(0)); // each thread clears its own buffer
-#pragma omp for schedule(static, 64) // round-robin chunks: balanced and deterministic
-        for (Index i = 0; i < n; ++i) {
-            Vec3 vi{};
-            Real si = 0;
-            const Index* js = nb + list.begin(i);
-            const Index c = list.count(i);
-            const auto data_i = load(i);
-            for (Index k = 0; k < c; ++k) {
-                const Index j = js[k];
-                pair(data_i, i, j, vi, si, b + 4 * j);
-            }
-            b[4 * i] += vi.x;
-            b[4 * i + 1] += vi.y;
-            b[4 * i + 2] += vi.z;
-            b[4 * i + 3] += si;
-        }
-#pragma omp for schedule(static)
-        for (Index i = 0; i < n; ++i) {
-            Vec3 v{};
-            Real s = 0;
-            for (int t = 0; t < nt; ++t) {
-                const Real* bt = buf.per_thread[std::size_t(t)].data() + 4 * i;
-                v += Vec3{bt[0], bt[1], bt[2]};
-                s += bt[3];
-            }
-            out(i, v, s);
-        }
-    }
-}
-
-// The same loop with W values per particle: pair(load(i), i, j, acc_i, out_j) adds to
-// acc_i[0..W) and out_j[0..W); out(i, totals) receives each particle's W totals.
+// Runs pair(load(i), i, j, acc_i, out_j) over every pair of a half list, each pair once: the
+// pair adds particle i's contribution to acc_i[0..W) and particle j's to out_j[0..W).
+// out(i, totals) then receives each particle's W totals (zeros for particles in no pair).
+// Threads write their own buffers (no atomics), summed at the end in thread order, so a run is
+// reproducible for a given thread count; load(i) fetches particle i's data once. Only the
+// list's non-empty rows are visited and only the particles in some pair are cleared and
+// summed: a model made mostly of boundary particles (a long flume) costs what its fluid costs.
 template <int W, class Load, class Pair, class Out>
 void for_each_pair_w(const neighbors::PairList& list, Index n, ScatterBuffers& buf,
                      const Load& load, const Pair& pair, const Out& out) {
+    if (list.particles() != n)
+        throw std::logic_error("pair loop over " + std::to_string(n) +
+                               " particles with a pair list built for " +
+                               std::to_string(list.particles()));
     const int nt = omp_get_max_threads();
     buf.per_thread.resize(std::size_t(nt));
     for (auto& b : buf.per_thread) b.resize(W * std::size_t(n));
     const Index* nb = list.neighbors();
+    const Index* rows = list.rows().data();
+    const Index nrows = Index(list.rows().size());
+    const Index* touched = list.touched().data();
+    const Index ntouched = Index(list.touched().size());
+    const std::uint8_t* mask = list.touched_mask();
 #pragma omp parallel
     {
         Real* b = buf.per_thread[std::size_t(omp_get_thread_num())].data();
-        std::fill(b, b + W * std::size_t(n), Real(0));
-#pragma omp for schedule(static, 64)
-        for (Index i = 0; i < n; ++i) {
+        for (Index k = 0; k < ntouched; ++k) // each thread clears its own buffer
+            for (int w = 0; w < W; ++w) b[W * touched[k] + w] = 0;
+#pragma omp for schedule(static, 64) // round-robin chunks of rows: balanced and deterministic
+        for (Index r = 0; r < nrows; ++r) {
+            const Index i = rows[r];
             Real acc[W] = {};
             const Index* js = nb + list.begin(i);
             const Index c = list.count(i);
@@ -82,13 +55,36 @@ void for_each_pair_w(const neighbors::PairList& list, Index n, ScatterBuffers& b
 #pragma omp for schedule(static)
         for (Index i = 0; i < n; ++i) {
             Real total[W] = {};
-            for (int t = 0; t < nt; ++t) {
-                const Real* bt = buf.per_thread[std::size_t(t)].data() + W * i;
-                for (int w = 0; w < W; ++w) total[w] += bt[w];
-            }
-            out(i, total);
+            if (mask[i])
+                for (int t = 0; t < nt; ++t) {
+                    const Real* bt = buf.per_thread[std::size_t(t)].data() + W * i;
+                    for (int w = 0; w < W; ++w) total[w] += bt[w];
+                }
+            out(i, static_cast<const Real*>(total));
         }
     }
+}
+
+// The same loop with a vector and a scalar per particle: pair(load(i), i, j, vec_i, s_i,
+// out_j) adds particle i's contribution to (vec_i, s_i) and particle j's to out_j[0..3];
+// out(i, vec, s) receives each particle's totals.
+template <class Load, class Pair, class Out>
+void for_each_pair(const neighbors::PairList& list, Index n, ScatterBuffers& buf, const Load& load,
+                   const Pair& pair, const Out& out) {
+    for_each_pair_w<4>(
+        list, n, buf, load,
+        [&](const auto& data_i, Index i, Index j, Real* acc, Real* out_j) {
+            Vec3 vi{acc[0], acc[1], acc[2]};
+            Real si = acc[3];
+            pair(data_i, i, j, vi, si, out_j);
+            acc[0] = vi.x;
+            acc[1] = vi.y;
+            acc[2] = vi.z;
+            acc[3] = si;
+        },
+        [&](Index i, const Real* t) {
+            out(i, Vec3{t[0], t[1], t[2]}, t[3]);
+        });
 }
 
 } // namespace debrisflow::exec

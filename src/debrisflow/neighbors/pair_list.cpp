@@ -1,5 +1,6 @@
 #include "debrisflow/neighbors/pair_list.hpp"
 #include <algorithm>
+#include <atomic>
 #include <numeric>
 
 namespace debrisflow::neighbors {
@@ -26,8 +27,32 @@ void PairList::build(const GridView& grid, const particles::ParticleView& pv) {
             cnt[i] = c;
             worst = std::max(worst, c);
         }
-        if (worst <= cap) return;
+        if (worst <= cap) break;
         capacity_ = std::size_t(worst) + std::size_t(worst) / 4 + 8;
+    }
+    index_touched(n);
+}
+
+void PairList::index_touched(Index n) {
+    mask_.assign(std::size_t(n), 0);
+    std::uint8_t* mask = mask_.data();
+    const Index* jj = j_.data();
+    const Index* cnt = count_.data();
+    const std::size_t cap = capacity_;
+    // Several rows can mark the same j: relaxed atomic stores of the same value.
+#pragma omp parallel for schedule(dynamic, 512)
+    for (Index i = 0; i < n; ++i) {
+        if (cnt[i] == 0) continue;
+        std::atomic_ref<std::uint8_t>(mask[i]).store(1, std::memory_order_relaxed);
+        const Index* row = jj + std::size_t(i) * cap;
+        for (Index k = 0; k < cnt[i]; ++k)
+            std::atomic_ref<std::uint8_t>(mask[row[k]]).store(1, std::memory_order_relaxed);
+    }
+    rows_.clear();
+    touched_.clear();
+    for (Index i = 0; i < n; ++i) {
+        if (cnt[i] > 0) rows_.push_back(i);
+        if (mask[i]) touched_.push_back(i);
     }
 }
 

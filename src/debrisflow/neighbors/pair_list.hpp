@@ -1,6 +1,7 @@
 #pragma once
 #include "debrisflow/neighbors/grid_view_k.hpp"
 #include "debrisflow/particles/particle_set.hpp"
+#include <cstdint>
 #include <vector>
 
 namespace debrisflow::neighbors {
@@ -20,11 +21,23 @@ public:
     Index count(Index i) const { return count_[i]; }
     const Index* neighbors() const { return j_.data(); }
     std::size_t pairs() const;
+    Index particles() const { return Index(count_.size()); } // particles at the last build
     std::size_t capacity() const { return capacity_; }
+    // Particles with a non-empty row (ascending): the fluid, where pair loops start.
+    const std::vector<Index>& rows() const { return rows_; }
+    // Particles in any pair, as i or j (ascending), and the same as a 0/1 mask over all
+    // particles: the only ones a pair loop can give a non-zero sum (in a long flume most
+    // boundary particles are in no pair, and loops skip them).
+    const std::vector<Index>& touched() const { return touched_; }
+    const std::uint8_t* touched_mask() const { return mask_.data(); }
 
 private:
+    void index_touched(Index n);
+
     std::size_t capacity_ = 64;
     std::vector<Index> count_, j_;
+    std::vector<Index> rows_, touched_;
+    std::vector<std::uint8_t> mask_;
 };
 
 } // namespace debrisflow::neighbors
