@@ -44,10 +44,16 @@ TEST(OpenBoundaries, HydrographInflowMassBalanceAndOutflow) {
     EXPECT_NEAR(balance, 0.0, 1e-9 * m1);
     // The hydrograph is imposed as tabulated (linear between 2 and 3 s: 0.03 at 2.5 s).
     const auto& q = sim.probe("upstream").history();
-    for (const auto& row : q)
-        if (std::abs(row[0] - 2.5) < 0.002) EXPECT_NEAR(row[1], 0.03, 0.02 * (row[0] - 2.5) + 1e-6);
+    for (const auto& row : q) {
+        if (std::abs(row[0] - 2.5) < 0.002) {
+            EXPECT_NEAR(row[1], 0.03, 0.02 * (row[0] - 2.5) + 1e-6);
+        }
+    }
     // Nothing leaves before the front (which starts at x = 0.1 m at 0.2 m/s) can reach 2.3 m.
-    for (const auto& row : out.history())
-        if (row[0] < 2.0) EXPECT_EQ(row[1], 0.0) << "t = " << row[0];
+    for (const auto& row : out.history()) {
+        if (row[0] < 2.0) {
+            EXPECT_EQ(row[1], 0.0) << "t = " << row[0];
+        }
+    }
     EXPECT_GT(out.finals()[0], 50.0);
 }

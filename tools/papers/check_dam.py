@@ -27,9 +27,25 @@ def analyse(run):
     tr = read_probe(run, "trapping")
     if not tr:
         return None
-    return dict(t=tr["time [s]"], E_t=tr["E [-]"], E=float(tr["E [-]"][-1]),
-                up=float(tr["M_up [kg]"][-1]), down=float(tr["M_down [kg]"][-1]),
-                window=window(run), t_end=float(tr["time [s]"][-1]))
+    a = dict(t=tr["time [s]"], E_t=tr["E [-]"], E=float(tr["E [-]"][-1]),
+             up=float(tr["M_up [kg]"][-1]), down=float(tr["M_down [kg]"][-1]),
+             window=window(run), t_end=float(tr["time [s]"][-1]))
+    a["halves"] = half_window_E(tr["time [s]"], tr["M_up [kg]"], tr["M_down [kg]"],
+                                a["window"][0], min(a["window"][1], a["t_end"]))
+    return a
+
+
+def half_window_E(t, up, down, t0, t1):
+    """E over each half of the counting window, from the masses counted by each half's end:
+    how much E moves with the sample (a few rocks pass the dam in a window)."""
+    mid = 0.5 * (t0 + t1)
+    at = lambda series, x: float(np.interp(x, t, series))
+    out = []
+    for a, b in ((t0, mid), (mid, t1)):
+        d_up = at(up, b) - at(up, a)
+        d_down = at(down, b) - at(down, a)
+        out.append(1 - d_down / d_up if d_up > 0 else float("nan"))
+    return out
 
 
 def report(root, figures):
@@ -46,9 +62,11 @@ def report(root, figures):
         diff = f"{100 * (a['E'] / E_EXP - 1):+.0f} % vs exp." if r == 1.18 else ""
         w0, w1 = a["window"]
         rows.append([f"{r}", f"{a['E']:.3f}", f"{a['up']:.2f} / {a['down']:.2f}",
-                     f"{w0:g}–{min(w1, a['t_end']):g}", paper, diff,
+                     f"{w0:g}–{min(w1, a['t_end']):g}",
+                     " / ".join(f"{e:.2f}" for e in a["halves"]), paper, diff,
                      f"{wall_seconds(run) / 60:.0f} min, {status(run)}"])
-    lines += table(["s/d95", "E", "M_up / M_down [kg]", "window [s]", "paper", "diff.", "run"], rows)
+    lines += table(["s/d95", "E", "M_up / M_down [kg]", "window [s]",
+                    "E, first / second half", "paper", "diff.", "run"], rows)
     lines.append("")
     if figures:
         import matplotlib
