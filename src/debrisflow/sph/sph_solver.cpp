@@ -12,6 +12,18 @@ namespace debrisflow::sph {
 
 using particles::Kind;
 
+namespace {
+// Particle i's data for the velocity-gradient pair loops, loaded once per row.
+struct GradientSide {
+    Vec3 x, v;
+    Real vol; // m / rho
+    bool fluid;
+    static GradientSide of(const particles::ParticleView& pv, const Real* vol, Index i) {
+        return {pv.pos(i), pv.vel(i), vol[i], pv.is_fluid(i)};
+    }
+};
+} // namespace
+
 SphSolver::SphSolver(const SphParams& params, particles::ParticleSet& set, const Domain& domain)
     : params_(params), set_(set), domain_(domain), eos_(params.rho0, params.c0, params.gamma),
       models_(SphModels::from_params(params)) {
@@ -69,18 +81,19 @@ void SphSolver::compute_sps_stress(bool pairs) {
             // Half pair list: i gains vol_j (v_j - v_i) (x) grad W_ij and j the mirror term
             // vol_i (v_j - v_i) (x) grad W_ij (fluid particles only).
             const Real support2 = support_ * support_;
+            const Real* vol = vol_.data(); // m / rho, from update_pressure()
             exec::for_each_pair_w<6>(
-                list_, pv.n, buffers_, [=](Index i) { return i; },
-                [=](Index, Index i, Index j, Real* di, Real* dj) {
-                    const bool fi = pv.is_fluid(i), fj = pv.is_fluid(j);
-                    if (!fi && !fj) return;
-                    const Vec3 r = gv.separation(pv.pos(i), pv.pos(j));
+                list_, pv.n, buffers_, [=](Index i) { return GradientSide::of(pv, vol, i); },
+                [=](const GradientSide& a, Index, Index j, Real* di, Real* dj) {
+                    const bool fj = pv.is_fluid(j);
+                    if (!a.fluid && !fj) return;
+                    const Vec3 r = gv.separation(a.x, pv.pos(j));
                     const Real r2 = dot(r, r);
                     if (r2 >= support2) return;
                     const Vec3 gw = kernel.grad_over_r(std::sqrt(r2)) * r;
-                    const Vec3 dv = pv.vel(j) - pv.vel(i);
-                    if (fi) add_symmetric_gradient(di, pv.mass[j] / pv.rho[j], dv, gw);
-                    if (fj) add_symmetric_gradient(dj, pv.mass[i] / pv.rho[i], dv, gw);
+                    const Vec3 dv = pv.vel(j) - a.v;
+                    if (a.fluid) add_symmetric_gradient(di, vol[j], dv, gw);
+                    if (fj) add_symmetric_gradient(dj, a.vol, dv, gw);
                 },
                 [=](Index i, const Real* d) {
                     Real* t = tau + 6 * i;
@@ -127,23 +140,24 @@ void SphSolver::update_viscosity(bool pairs) {
                 // mirror term vol_i (v_i - v_j) (x) grad W_ji = vol_i (v_j - v_i) (x) grad W_ij
                 // to j (fluid particles only; wall partners with their no-slip velocity).
                 const Real support2 = support_ * support_;
+                const Real* vol = vol_.data(); // m / rho, from update_pressure()
                 exec::for_each_pair_w<6>(
-                    list_, pv.n, buffers_, [=](Index i) { return i; },
-                    [=](Index, Index i, Index j, Real* di, Real* dj) {
-                        const bool fi = pv.is_fluid(i), fj = pv.is_fluid(j);
-                        if (!fi && !fj) return;
-                        const Vec3 xi = pv.pos(i), xj = pv.pos(j);
-                        const Vec3 r = gv.separation(xi, xj);
+                    list_, pv.n, buffers_, [=](Index i) { return GradientSide::of(pv, vol, i); },
+                    [=](const GradientSide& a, Index i, Index j, Real* di, Real* dj) {
+                        const bool fj = pv.is_fluid(j);
+                        if (!a.fluid && !fj) return;
+                        const Vec3 xj = pv.pos(j);
+                        const Vec3 r = gv.separation(a.x, xj);
                         const Real r2 = dot(r, r);
                         if (r2 >= support2) return;
                         const Vec3 gw = kernel.grad_over_r(std::sqrt(r2)) * r;
-                        if (fi)
+                        if (a.fluid)
                             add_symmetric_gradient(
-                                di, pv.mass[j] / pv.rho[j],
-                                gradient_velocity_difference(pv, i, j, xi, pv.vel(i), half_dp), gw);
+                                di, vol[j],
+                                gradient_velocity_difference(pv, i, j, a.x, a.v, half_dp), gw);
                         if (fj)
                             add_symmetric_gradient(
-                                dj, pv.mass[i] / pv.rho[i],
+                                dj, a.vol,
                                 -1 * gradient_velocity_difference(pv, j, i, xj, pv.vel(j), half_dp),
                                 gw);
                     },
