@@ -52,17 +52,27 @@ def report(root, figures):
     lines = ["### Slit check dam, trapping efficiency (section A)", ""]
     found = {r: analyse(os.path.join(root, f"A_check_s{r}")) for r in RATIOS}
     found = {r: a for r, a in found.items() if a is not None}
+    # Further realizations of a width (A_check_s<r>_<tag>: another seed or an earlier code
+    # whose trajectory diverged), listed and plotted beside the main run.
+    extra = []
+    for name in sorted(os.listdir(root)) if os.path.isdir(root) else []:
+        m = re.fullmatch(r"A_check_s([0-9.]+)_(\w+)", name)
+        if m and float(m.group(1)) in RATIOS:
+            a = analyse(os.path.join(root, name))
+            if a is not None:
+                extra.append((float(m.group(1)), m.group(2), a))
     if not found:
         return lines + ["A_check_s*: not run (`tools/papers/run_reduced.sh check`)", ""]
     rows = []
-    for r, a in found.items():
-        run = os.path.join(root, f"A_check_s{r}")
+    runs = [(r, "", a) for r, a in found.items()] + extra
+    for r, tag, a in sorted(runs, key=lambda e: (e[0], e[1])):
+        run = os.path.join(root, f"A_check_s{r}" + (f"_{tag}" if tag else ""))
         paper = f"exp. {E_EXP}; runs {' / '.join(map(str, E_PAPER_RUNS))}" if r == 1.18 else \
             "below the 1.18 value"
         diff = f"{100 * (a['E'] / E_EXP - 1):+.0f} % vs exp." if r == 1.18 else ""
         w0, w1 = a["window"]
-        rows.append([f"{r}", f"{a['E']:.3f}", f"{a['up']:.2f} / {a['down']:.2f}",
-                     f"{w0:g}–{min(w1, a['t_end']):g}",
+        rows.append([f"{r}" + (f" ({tag})" if tag else ""), f"{a['E']:.3f}", f"{a['up']:.2f} / {a['down']:.2f}",
+                     f"{w0:g}–{round(min(w1, a['t_end']), 2):g}",
                      " / ".join(f"{e:.2f}" for e in a["halves"]), paper, diff,
                      f"{wall_seconds(run) / 60:.0f} min, {status(run)}"])
     lines += table(["s/d95", "E", "M_up / M_down [kg]", "window [s]",
@@ -75,6 +85,9 @@ def report(root, figures):
         fig, ax = plt.subplots(1, 2, figsize=(11, 4))
         rs = sorted(found)
         ax[0].plot(rs, [found[r]["E"] for r in rs], "o-", label="debrisflow, reduced slice")
+        if extra:
+            ax[0].plot([r for r, _, _ in extra], [a["E"] for _, _, a in extra], "o",
+                       mfc="none", color="C0", label="other realizations")
         ax[0].plot([1.18], [E_EXP], "ks", label="experiment")
         ax[0].plot([1.18] * 3, E_PAPER_RUNS, "r^", label="paper SPH-DEM runs I–III")
         ax[0].set(xlabel="s / d95", ylabel="trapping efficiency E", ylim=(0, 1.05),

@@ -6,7 +6,7 @@
 #   /usr/bin/python3 tools/papers/report.py runs/papers --figures docs/img
 # Exits non-zero when a run fails (its output so far is kept). Also `ctest -L paper`.
 # Usage: tools/papers/run_reduced.sh [flume|slit|slit10|baffles|check|container|dam ...]
-# (default: all of them; the slit check dam of section A takes about 80 min per run on one thread)
+# (default: all of them; the slit check dam of section A takes 19-25 min per 6 s run on 2 threads)
 set -u
 cd "$(dirname "$0")/../.."
 OUT=${OUT:-runs/papers}
