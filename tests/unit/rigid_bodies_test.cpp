@@ -1,6 +1,7 @@
 // Rigid bodies: mass properties against closed forms, quaternion helpers, joints, locks,
 // prescribed motion, body-body contact, and case-file errors.
 #include "debrisflow/core/error.hpp"
+#include "debrisflow/dem/box_faces.hpp"
 #include "rigid_rig.hpp"
 #include "run_case.hpp"
 #include <cmath>
@@ -39,10 +40,8 @@ std::string write_box_stl(Real a, Real b, Real c) {
     return path.string();
 }
 
-// A wall triangle a, b, c with its normal (b - a) x (c - a) normalised.
 dem::WallPrimitive tri(Vec3 a, Vec3 b, Vec3 c) {
-    const Vec3 n = cross(b - a, c - a);
-    return dem::WallPrimitive{a, b, c, (1 / norm(n)) * n, dem::PrimitiveType::triangle, 0};
+    return dem::wall_triangle(a, b, c);
 }
 
 } // namespace

@@ -11,11 +11,17 @@ enum class PrimitiveType : std::uint8_t { plane = 0, triangle = 1 };
 
 // One piece of a geometric wall: a half-space (plane through a with unit normal n, grains on
 // the +n side) or a triangle (a, b, c; n its unit normal), touched from either side.
+// A triangle may be a face of a convex solid (a structure's box, WallSet::solids()): then n
+// points into the solid, and a face lying on another solid of the same motion (a post's foot
+// on the bed, its side against the flume wall) is covered by it: inside the structure, no
+// way in or out.
 struct WallPrimitive {
     Vec3 a, b, c, n;
     PrimitiveType type;
-    std::int16_t wall;         // index of the named wall it belongs to
-    std::int32_t corners = -1; // row of WallSet::corners() for a triangle on moving nodes
+    std::int16_t wall;            // index of the named wall it belongs to
+    std::int32_t corners = -1;    // row of WallSet::corners() for a triangle on moving nodes
+    std::int32_t solid = -1;      // convex solid it bounds; -1: an open surface
+    std::int32_t covered_by = -1; // solid holding this face; -1: exposed
 };
 static_assert(std::is_trivially_copyable_v<WallPrimitive>);
 

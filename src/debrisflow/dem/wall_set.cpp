@@ -1,5 +1,7 @@
 #include "debrisflow/dem/wall_set.hpp"
 #include <algorithm>
+#include <cmath>
+#include <stdexcept>
 
 namespace debrisflow::dem {
 
@@ -25,13 +27,78 @@ WallPrimitive nodal_triangle(const NodalCorners& c, const std::vector<Vec3>& x, 
 int WallSet::add(Wall w, std::vector<WallPrimitive> prims) {
     const int index = int(walls_.size());
     walls_.push_back(std::move(w));
+    const auto base = std::int32_t(solids_.size());
     for (auto& p : prims) {
         p.wall = std::int16_t(index);
         p.corners = -1;
+        p.covered_by = -1;
+        if (p.solid >= 0) p.solid += base;
         prims_.push_back(p);
     }
+    index_solids();
+    cover_faces();
     ++layout_;
     return index;
+}
+
+// Rebuilds solids_ from the primitives' solid numbers; each solid's faces must be listed
+// together and face into it (the centroid of its corners behind every face).
+void WallSet::index_solids() {
+    std::int32_t count = 0;
+    for (const auto& p : prims_) count = std::max(count, p.solid + 1);
+    solids_.assign(std::size_t(count), Solid{});
+    for (std::size_t i = 0; i < prims_.size(); ++i) {
+        const auto& p = prims_[i];
+        if (p.solid < 0) continue;
+        Solid& s = solids_[std::size_t(p.solid)];
+        if (s.count == 0) s.first = i, s.wall = p.wall;
+        if (p.type != PrimitiveType::triangle || i != s.first + s.count)
+            throw std::logic_error("WallSet: a solid's faces must be triangles listed together");
+        ++s.count;
+    }
+    for (std::size_t k = 0; k < solids_.size(); ++k) {
+        const Solid& s = solids_[k];
+        Vec3 centre{};
+        for (std::size_t i = s.first; i < s.first + s.count; ++i)
+            centre += prims_[i].a + prims_[i].b + prims_[i].c;
+        centre = (Real(1) / Real(3 * s.count)) * centre;
+        for (std::size_t i = s.first; i < s.first + s.count; ++i)
+            if (!(dot(centre - prims_[i].a, prims_[i].n) > 0))
+                throw std::logic_error("WallSet: a solid's face normal points out of it");
+    }
+}
+
+// A face of one solid lying on or in another solid that moves with it (a post's foot on the
+// bed, its side against the flume wall) is covered: a point behind it is inside the structure,
+// and leaving through it would lead into the neighbour.
+void WallSet::cover_faces() {
+    for (auto& p : prims_) {
+        if (p.solid < 0) continue;
+        p.covered_by = -1;
+        const Real tol =
+            Real(1e-9) * (1 + std::max({std::fabs(p.a.x), std::fabs(p.a.y), std::fabs(p.a.z)}));
+        for (std::size_t k = 0; k < solids_.size() && p.covered_by < 0; ++k) {
+            const Solid& s = solids_[k];
+            if (std::int32_t(k) == p.solid) continue;
+            const Vec3 dv =
+                walls_[std::size_t(s.wall)].velocity - walls_[std::size_t(p.wall)].velocity;
+            if (dv.x != 0 || dv.y != 0 || dv.z != 0) continue;
+            bool on = true;
+            for (std::size_t i = s.first; i < s.first + s.count && on; ++i) {
+                const auto& f = prims_[i];
+                on = dot(p.a - f.a, f.n) >= -tol && dot(p.b - f.a, f.n) >= -tol &&
+                     dot(p.c - f.a, f.n) >= -tol;
+            }
+            if (on) p.covered_by = std::int32_t(k);
+        }
+    }
+}
+
+bool WallSet::inside(std::int32_t s, Vec3 p) const {
+    const Solid& solid = solids_[std::size_t(s)];
+    for (std::size_t i = solid.first; i < solid.first + solid.count; ++i)
+        if (dot(p - prims_[i].a, prims_[i].n) < 0) return false;
+    return true;
 }
 
 int WallSet::add_nodal(Wall w, const std::vector<NodalCorners>& triangles) {
@@ -60,6 +127,7 @@ void WallSet::replace_nodal(int wall, const std::vector<NodalCorners>& triangles
     }
     prims_ = std::move(kept);
     corners_ = std::move(kept_corners);
+    index_solids();
     ++layout_;
 }
 

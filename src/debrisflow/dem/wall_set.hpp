@@ -30,8 +30,17 @@ struct MovingNodes {
     std::vector<Vec3> impulse; // [N s] since the last collection
 };
 
+// A convex solid (a structure's box): faces first .. first + count - 1 of the primitive list,
+// normals pointing into it.
+struct Solid {
+    std::size_t first = 0, count = 0;
+    int wall = -1;
+};
+
 class WallSet {
 public:
+    // Adds a wall; the `solid` numbers of its primitives count from 0 within `prims` (each
+    // solid's faces listed together) and become indices of solids().
     int add(Wall w, std::vector<WallPrimitive> prims);
     // Adds a wall of triangles whose corners follow the moving nodes; returns its index.
     int add_nodal(Wall w, const std::vector<NodalCorners>& triangles);
@@ -53,11 +62,18 @@ public:
     std::vector<Wall>& walls() { return walls_; }
     const std::vector<Wall>& walls() const { return walls_; }
     const std::vector<WallPrimitive>& primitives() const { return prims_; }
+    const std::vector<Solid>& solids() const { return solids_; }
+    // Whether p lies inside solid s: behind (on the normal side of) every face plane.
+    bool inside(std::int32_t s, Vec3 p) const;
     int find(const std::string& name) const; // -1 if absent
     bool empty() const { return prims_.empty(); }
 
 private:
+    void index_solids();
+    void cover_faces();
+
     std::vector<Wall> walls_;
+    std::vector<Solid> solids_;
     std::vector<WallPrimitive> prims_;
     std::vector<NodalCorners> corners_;
     MovingNodes nodes_;

@@ -69,6 +69,13 @@ std::vector<std::size_t> primitives_near(const dem::WallSet& walls, const BodySt
     return near;
 }
 
+// A face of a solid lying on another (active) solid of the structure is no way in or out.
+bool covered(const dem::WallSet& walls, const dem::WallPrimitive& w) {
+    if (w.covered_by < 0) return false;
+    const auto& holder = walls.solids()[std::size_t(w.covered_by)];
+    return walls.walls()[std::size_t(holder.wall)].active;
+}
+
 std::uint64_t key(std::uint64_t a, std::uint64_t b, std::uint64_t c) {
     return (a << 40) ^ (b << 16) ^ c;
 }
@@ -155,10 +162,23 @@ Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<Bo
                 std::vector<std::tuple<int, Hit, std::size_t>> best;
                 for (const std::size_t pi : near) {
                     const auto& w = prims[pi];
+                    if (covered(*walls, w)) continue;
                     Vec3 n;
                     Real gap;
                     if (!vertex || w.type == dem::PrimitiveType::plane) {
                         if (!sphere_gap(w, p, sp.radius, n, gap)) continue;
+                    } else if (w.solid >= 0) {
+                        // A vertex at a face of a convex solid (a post): outside is against
+                        // the face's normal. Behind the face's plane the vertex is inside only
+                        // if it is behind every face (one out in the slit can be past the plane
+                        // of the post's upstream face); inside, it leaves by the nearest
+                        // exposed face (the wall's shallowest hit, below).
+                        Real along_n;
+                        if (!vertex_over_triangle(w, p, reach, along_n)) continue;
+                        if (along_n > 0 && !walls->inside(w.solid, p)) continue;
+                        n = -w.n;
+                        gap = -along_n;
+                        if (gap < -reach) continue;
                     } else {
                         // A vertex over a triangle: which side is outside? The side it was on
                         // when it came within reach of the triangle, remembered while it stays

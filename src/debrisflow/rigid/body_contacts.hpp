@@ -15,7 +15,9 @@ namespace debrisflow::rigid {
 //    BodyState::contact_radius) and exact sphere of a body against the planes and triangles of
 //    the geometric walls; one contact per feature and wall (a sphere's deepest, a vertex's
 //    shallowest), so a face resting on a plane pushes at its corners whatever the SPH
-//    resolution; a vertex keeps the side of a triangle it came from while within reach;
+//    resolution; against a face of a convex solid (a structure's box) a vertex is inside only
+//    if behind all its faces and leaves by the nearest exposed one; against an open surface
+//    (an STL wall) it keeps the side of a triangle it came from while within reach;
 //  - distributed body-body contact between the surface sample spheres of different bodies
 //    (Canelas et al. 2017: each pair of touching samples is one contact of the two bodies).
 // Tangential history is kept per contact; evaluations inside a step use the history of the

@@ -1,5 +1,6 @@
 #include "debrisflow/scenario/build_grains.hpp"
 #include "debrisflow/core/error.hpp"
+#include "debrisflow/dem/box_faces.hpp"
 #include "debrisflow/scenario/size_sampler.hpp"
 #include "debrisflow/scenario/stl_mesh.hpp"
 #include <algorithm>
@@ -211,39 +212,6 @@ void build_grains(const io::CaseSpec& c, dem::GrainSet& g) {
     }
 }
 
-namespace {
-
-dem::WallPrimitive triangle(Vec3 a, Vec3 b, Vec3 c) {
-    Vec3 n = cross(b - a, c - a);
-    n = (1 / norm(n)) * n;
-    return {a, b, c, n, dem::PrimitiveType::triangle, 0};
-}
-
-void quad(std::vector<dem::WallPrimitive>& out, Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
-    out.push_back(triangle(a, b, c));
-    out.push_back(triangle(a, c, d));
-}
-
-// Faces of the box [lo, hi]: bottom, top, and the four sides x-, x+, y-, y+.
-void box_faces(std::vector<dem::WallPrimitive>& out, Vec3 lo, Vec3 hi, bool bottom, bool top,
-               bool xsides, bool ysides) {
-    const Vec3 p000{lo.x, lo.y, lo.z}, p100{hi.x, lo.y, lo.z}, p110{hi.x, hi.y, lo.z},
-        p010{lo.x, hi.y, lo.z}, p001{lo.x, lo.y, hi.z}, p101{hi.x, lo.y, hi.z},
-        p111{hi.x, hi.y, hi.z}, p011{lo.x, hi.y, hi.z};
-    if (bottom) quad(out, p000, p100, p110, p010);
-    if (top) quad(out, p001, p011, p111, p101);
-    if (xsides) {
-        quad(out, p000, p010, p011, p001);
-        quad(out, p100, p101, p111, p110);
-    }
-    if (ysides) {
-        quad(out, p000, p001, p101, p100);
-        quad(out, p010, p110, p111, p011);
-    }
-}
-
-} // namespace
-
 void build_dem_walls(const io::CaseSpec& c, dem::WallSet& walls) {
     for (const auto& w : c.walls) {
         dem::Wall wall;
@@ -258,26 +226,28 @@ void build_dem_walls(const io::CaseSpec& c, dem::WallSet& walls) {
             prims.push_back({w.point, {}, {}, w.normal, dem::PrimitiveType::plane, 0});
             wall.origin = w.point;
         } else if (w.type == "box") {
-            box_faces(prims, lo, hi, true, true, true, c.dim == 3);
+            dem::box_faces(prims, lo, hi, {true, true, true, c.dim == 3});
             wall.origin = Real(0.5) * (lo + hi);
         } else if (w.type == "boxes") {
-            for (const auto& b : w.boxes) {
-                Vec3 blo = b[0], bhi = b[1];
+            // A structure's boxes are solid: rock vertices inside one leave by its nearest
+            // exposed face (BodyContacts).
+            for (std::size_t k = 0; k < w.boxes.size(); ++k) {
+                Vec3 blo = w.boxes[k][0], bhi = w.boxes[k][1];
                 if (c.dim == 2) blo.y = -1, bhi.y = 1;
-                box_faces(prims, blo, bhi, true, true, true, c.dim == 3);
+                dem::box_faces(prims, blo, bhi, {true, true, true, c.dim == 3}, std::int32_t(k));
             }
             wall.origin = Real(0.5) * (lo + hi);
         } else if (w.type == "open_tank") {
-            box_faces(prims, lo, hi, true, false, true, c.dim == 3);
+            dem::box_faces(prims, lo, hi, {true, false, true, c.dim == 3});
             wall.origin = Real(0.5) * (lo + hi);
         } else if (w.type == "channel") {
-            box_faces(prims, lo, hi, true, false, false, c.dim == 3);
+            dem::box_faces(prims, lo, hi, {true, false, false, c.dim == 3});
             wall.origin = Real(0.5) * (lo + hi);
         } else {
             const auto mesh = TriangleMesh::read_stl(w.shape.file, w.shape.scale, w.shape.offset);
             for (const auto& t : mesh.triangles) {
                 if (norm(cross(t.b - t.a, t.c - t.a)) == 0) continue; // degenerate
-                prims.push_back(triangle(t.a, t.b, t.c));
+                prims.push_back(dem::wall_triangle(t.a, t.b, t.c));
             }
             Vec3 mlo, mhi;
             mesh.bounds(mlo, mhi);
