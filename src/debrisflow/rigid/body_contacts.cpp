@@ -41,12 +41,20 @@ Real impact_duration(const dem::PairParams& p, Real r_eff, Real m_eff, Real v) {
     return Real(2.87) * std::pow(m_eff * m_eff / (r_eff * p.e_star * p.e_star * v), Real(0.2));
 }
 
+// A face of a solid lying on another (active) solid of the structure is no way in or out.
+bool covered(const dem::WallSet& walls, const dem::WallPrimitive& w) {
+    if (w.covered_by < 0) return false;
+    const auto& holder = walls.solids()[std::size_t(w.covered_by)];
+    return walls.walls()[std::size_t(holder.wall)].active;
+}
+
 // The active primitives that any feature of body b can touch, or reach within the horizon:
 // a feature at p lies within R (the body's bound radius, sphere radii included) of the
 // centre, so its gap to a triangle is at least dist(centre, triangle) - R and to a plane at
 // least the centre's height - R. A primitive beyond R + the vertex reach + the closing
 // distance over the horizon gives no contact, no imminent contact and no side memory for
-// any feature, so dropping it changes nothing but the cost (features x primitives).
+// any feature, so dropping it changes nothing but the cost (features x primitives). Covered
+// faces of solids are dropped too.
 std::vector<std::size_t> primitives_near(const dem::WallSet& walls, const BodyState& b,
                                          const BodyModel& model, Real horizon) {
     const auto& prims = walls.primitives();
@@ -56,7 +64,7 @@ std::vector<std::size_t> primitives_near(const dem::WallSet& walls, const BodySt
     std::vector<std::size_t> near;
     for (std::size_t pi = 0; pi < prims.size(); ++pi) {
         const auto& w = prims[pi];
-        if (!wl[w.wall].active) continue;
+        if (!wl[w.wall].active || covered(walls, w)) continue;
         const Real closing = (norm(b.vel - wl[w.wall].velocity) + spin) * horizon;
         if (w.type == dem::PrimitiveType::plane) {
             if (dot(b.pos - w.a, w.n) - bound > closing) continue;
@@ -67,13 +75,6 @@ std::vector<std::size_t> primitives_near(const dem::WallSet& walls, const BodySt
         near.push_back(pi);
     }
     return near;
-}
-
-// A face of a solid lying on another (active) solid of the structure is no way in or out.
-bool covered(const dem::WallSet& walls, const dem::WallPrimitive& w) {
-    if (w.covered_by < 0) return false;
-    const auto& holder = walls.solids()[std::size_t(w.covered_by)];
-    return walls.walls()[std::size_t(holder.wall)].active;
 }
 
 std::uint64_t key(std::uint64_t a, std::uint64_t b, std::uint64_t c) {
@@ -162,7 +163,6 @@ Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<Bo
                 std::vector<std::tuple<int, Hit, std::size_t>> best;
                 for (const std::size_t pi : near) {
                     const auto& w = prims[pi];
-                    if (covered(*walls, w)) continue;
                     Vec3 n;
                     Real gap;
                     if (!vertex || w.type == dem::PrimitiveType::plane) {
