@@ -32,7 +32,6 @@ template <class K> void instantiate_kernel() {
     instantiate_interaction<K, models::LaminarViscosity, models::NoDiffusion>();
     instantiate_interaction<K, models::LaminarViscosity, models::Fourtakas>();
     instantiate_interaction<K, models::LaminarSpsViscosity, models::Fourtakas>();
-    launch(0, sph::SpsStress<K>{});
 }
 
 // Every grain's contacts with its candidate partners and wall primitives, as a per-grain

@@ -12,6 +12,8 @@ template <class Fn> void for_each_field(ParticleSet& s, Fn&& fn) {
     fn(s.group);
     fn(s.id);
 }
+
+constexpr std::size_t sps_width = 6; // components of ParticleSet::sps_tau per particle
 } // namespace
 
 Index ParticleSet::count(Kind k) const {
@@ -43,6 +45,7 @@ void ParticleSet::add(Vec3 pos, Vec3 vel, Real density, Real m, Kind k, std::int
     vy_old.push_back(vel.y);
     vz_old.push_back(vel.z);
     rho_old.push_back(density);
+    sps_tau.resize(sps_tau.size() + sps_width, Real(0));
     kind.push_back(std::uint8_t(k));
     group.push_back(grp);
     id.push_back(next_id_++);
@@ -59,6 +62,11 @@ void ParticleSet::permute(const std::vector<Index>& perm) {
         for (Index i = 0; i < n; ++i) out[i] = field[perm[i]];
         field.swap(out);
     });
+    std::vector<Real> tau(sps_tau.size());
+    for (std::size_t i = 0; i < perm.size(); ++i)
+        for (std::size_t k = 0; k < sps_width; ++k)
+            tau[sps_width * i + k] = sps_tau[sps_width * std::size_t(perm[i]) + k];
+    sps_tau.swap(tau);
 }
 
 void ParticleSet::compact(const std::vector<std::uint8_t>& keep) {
@@ -69,6 +77,11 @@ void ParticleSet::compact(const std::vector<std::uint8_t>& keep) {
             if (keep[i]) field[w++] = field[i];
         field.resize(w);
     });
+    std::size_t w = 0;
+    for (std::size_t i = 0; i < keep.size(); ++i)
+        if (keep[i])
+            for (std::size_t k = 0; k < sps_width; ++k) sps_tau[w++] = sps_tau[sps_width * i + k];
+    sps_tau.resize(w);
 }
 
 void ParticleSet::set_wall(Index i, Vec3 normal, Real depth) {

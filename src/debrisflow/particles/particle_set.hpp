@@ -35,6 +35,9 @@ public:
     std::vector<Real> wnx, wny, wnz, wd; // zero for fluid particles
     std::vector<Real> mu; // apparent dynamic viscosity [Pa s]; 0 for artificial viscosity
     std::vector<Real> vx_old, vy_old, vz_old, rho_old; // state at t_(n-1), Verlet scheme only
+    // SPS stress / rho^2 from the last force evaluation (Laminar+SPS only), 6 per particle
+    // (xx, xy, xz, yy, yz, zz); zero for new particles.
+    std::vector<Real> sps_tau;
     std::vector<std::uint8_t> kind;
     std::vector<std::int16_t> group;
     std::vector<ParticleId> id;

@@ -17,6 +17,7 @@ namespace debrisflow::sph {
 // acceleration the fluid exerts on them (for wall loads); they do not move. Boundary-boundary
 // pairs contribute nothing.
 template <class Kernel, class Viscosity, class Diffusion> struct PairTerms {
+    using viscosity_type = Viscosity;
     particles::ParticleView pv;
     Kernel kernel;
     Viscosity visc;
@@ -24,15 +25,18 @@ template <class Kernel, class Viscosity, class Diffusion> struct PairTerms {
     const Real* prho; // p / rho^2 per particle
     const Real* cs;   // sound speed per particle
     const Real* vol;  // m / rho per particle
-    const Real* tau;  // SPS stress / rho^2, 6 per particle (xx, xy, xz, yy, yz, zz), or nullptr
+    const Real* tau;  // SPS stress / rho^2, 6 per particle (xx, xy, xz, yy, yz, zz), or nullptr:
+                      // the stress of the previous force evaluation (see sps_tau below)
     Real half_dp;     // dp / 2: smallest fluid-wall distance used in the no-slip extrapolation
     Real eta2;        // 0.01 h^2, regulariser of 1 / r^2 (Monaghan 1992)
 
-    // a_i += m_j g, a_j -= m_i g; drho_i += m_j cont + d.i, drho_j += m_i cont + d.j
+    // a_i += m_j g, a_j -= m_i g; drho_i += m_j cont + d.i, drho_j += m_i cont + d.j;
+    // grad_w = grad_i W_ij (the velocity gradient of the SPS stress sums over it).
     struct Result {
         Vec3 g;
         Real cont;
         models::DensityRates d;
+        Vec3 grad_w;
     };
 
     // Per-particle data of one side of a pair, loaded once per particle in the pair loops.
@@ -79,6 +83,7 @@ template <class Kernel, class Viscosity, class Diffusion> struct PairTerms {
         out.g = (-(a.prho + b.prho)) * s.grad_w + visc.acceleration(s);
         if constexpr (Viscosity::needs_velocity_gradient) out.g += tau_dot(i, j, s.grad_w);
         out.d = s.boundary_j ? models::DensityRates{0, 0} : diff.pair(s);
+        out.grad_w = s.grad_w;
         return out;
     }
 
@@ -106,41 +111,11 @@ template <class Kernel, class Viscosity, class Diffusion> struct PairTerms {
     }
 };
 
-// Gather form (one thread per particle i, all neighbours from the cell grid): the layout a
-// GPU backend uses. Writes a_i (with gravity for fluid) and drho_i.
-template <class Kernel, class Viscosity, class Diffusion> struct FluidInteraction {
-    PairTerms<Kernel, Viscosity, Diffusion> terms;
-    neighbors::GridView grid;
-    Vec3 gravity;
-
-    DF_HD void operator()(Index i) const {
-        const auto& pv = terms.pv;
-        const bool fluid_i = pv.is_fluid(i);
-        Vec3 acc{};
-        Real drho = 0;
-        grid.for_each_neighbor(i, pv.pos(i), pv.x, pv.y, pv.z, [&](Index j, Vec3 r, Real r2) {
-            if (!fluid_i && !pv.is_fluid(j)) return;
-            const auto t = terms(i, j, r, r2);
-            acc += pv.mass[j] * t.g;
-            drho += pv.mass[j] * t.cont + t.d.i;
-        });
-        if (fluid_i) acc += gravity;
-        pv.ax[i] = acc.x;
-        pv.ay[i] = acc.y;
-        pv.az[i] = acc.z;
-        pv.drho[i] = drho;
-    }
-};
-
-template <class K, class V, class D>
-FluidInteraction<K, V, D> make_gather(const PairTerms<K, V, D>& terms, neighbors::GridView grid,
-                                      Vec3 gravity) {
-    return {terms, grid, gravity};
-}
-
 // SPS stress tau / rho^2 of a fluid particle (Dalrymple & Rogers 2006, eq. 11) from its
 // symmetric velocity gradient S = d[0..6) (xx, yy, zz, xy, xz, yz; add_symmetric_gradient):
-// nu_t = (C_s dp)^2 |S|, |S| = sqrt(2 S:S).
+// nu_t = (C_s dp)^2 |S|, |S| = sqrt(2 S:S). As in DualSPHysics (Dominguez et al. 2022), the
+// velocity gradient is summed in the force loop and the stress it gives is used in the next
+// force evaluation (half a step later), which saves a pass over the pairs.
 DF_HD inline void sps_tau(const Real d[6], Real smag, Real blin, Real inv_rho, Real t[6]) {
     const Real sxx = d[0], syy = d[1], szz = d[2], sxy = d[3], sxz = d[4], syz = d[5];
     const Real ss =
@@ -156,29 +131,50 @@ DF_HD inline void sps_tau(const Real d[6], Real smag, Real blin, Real inv_rho, R
     t[5] = inv_rho * (2 * nu_t * szz + iso);
 }
 
-// Gather form of the SPS stress of fluid particle i (device and gather paths) from the SPH
-// velocity gradient grad v_i = sum m_j / rho_j (v_j - v_i) (x) grad W_ij. The host path sums
-// the same terms over the half pair list (SphSolver::compute_sps_stress).
-template <class Kernel> struct SpsStress {
-    particles::ParticleView pv;
+// Gather form (one thread per particle i, all neighbours from the cell grid): the layout a
+// GPU backend uses. Writes a_i (with gravity for fluid) and drho_i, and for Laminar+SPS the
+// stress of fluid particle i from this evaluation's velocity gradient into tau_next (6 per
+// particle; copied to the particles' stress after the loop, which this loop reads).
+template <class Kernel, class Viscosity, class Diffusion> struct FluidInteraction {
+    PairTerms<Kernel, Viscosity, Diffusion> terms;
     neighbors::GridView grid;
-    Kernel kernel;
-    Real smag; // (C_s dp)^2
-    Real blin; // 2/3 C_I dp^2
-    Real* tau;
+    Vec3 gravity;
+    Real smag = 0; // (C_s dp)^2
+    Real blin = 0; // 2/3 C_I dp^2
+    Real* tau_next = nullptr;
 
     DF_HD void operator()(Index i) const {
-        Real* t = tau + 6 * i;
-        for (int k = 0; k < 6; ++k) t[k] = 0;
-        if (!pv.is_fluid(i)) return;
-        const Vec3 xi = pv.pos(i), vi = pv.vel(i);
-        Real d[6] = {0, 0, 0, 0, 0, 0};
-        grid.for_each_neighbor(i, xi, pv.x, pv.y, pv.z, [&](Index j, Vec3 r, Real r2) {
-            const Vec3 gw = kernel.grad_over_r(std::sqrt(r2)) * r;
-            add_symmetric_gradient(d, pv.mass[j] / pv.rho[j], pv.vel(j) - vi, gw);
+        const auto& pv = terms.pv;
+        const bool fluid_i = pv.is_fluid(i);
+        const Vec3 vi = pv.vel(i);
+        Vec3 acc{};
+        Real drho = 0;
+        Real strain[6] = {0, 0, 0, 0, 0, 0};
+        grid.for_each_neighbor(i, pv.pos(i), pv.x, pv.y, pv.z, [&](Index j, Vec3 r, Real r2) {
+            if (!fluid_i && !pv.is_fluid(j)) return;
+            const auto t = terms(i, j, r, r2);
+            acc += pv.mass[j] * t.g;
+            drho += pv.mass[j] * t.cont + t.d.i;
+            if constexpr (Viscosity::needs_velocity_gradient)
+                if (fluid_i) add_symmetric_gradient(strain, terms.vol[j], pv.vel(j) - vi, t.grad_w);
         });
-        sps_tau(d, smag, blin, 1 / pv.rho[i], t);
+        if (fluid_i) acc += gravity;
+        pv.ax[i] = acc.x;
+        pv.ay[i] = acc.y;
+        pv.az[i] = acc.z;
+        pv.drho[i] = drho;
+        if constexpr (Viscosity::needs_velocity_gradient) {
+            Real* t = tau_next + 6 * i;
+            for (int k = 0; k < 6; ++k) t[k] = 0;
+            if (fluid_i) sps_tau(strain, smag, blin, 1 / pv.rho[i], t);
+        }
     }
 };
+
+template <class K, class V, class D>
+FluidInteraction<K, V, D> make_gather(const PairTerms<K, V, D>& terms, neighbors::GridView grid,
+                                      Vec3 gravity, Real smag, Real blin, Real* tau_next) {
+    return {terms, grid, gravity, smag, blin, tau_next};
+}
 
 } // namespace debrisflow::sph

@@ -63,48 +63,11 @@ void SphSolver::update_neighbors(bool allow_reorder) {
     ++list_builds_;
 }
 
-void SphSolver::compute_sps_stress(bool pairs) {
-    auto pv = set_.view();
-    tau_.resize(6 * std::size_t(pv.n));
-    const auto& v = std::get<models::LaminarSpsViscosity>(models_.viscosity);
-    const auto gv = grid_.view();
+SphSolver::SpsConstants SphSolver::sps_constants() const {
+    const auto* v = std::get_if<models::LaminarSpsViscosity>(&models_.viscosity);
+    if (!v) return {};
     const Real dp2 = params_.dp * params_.dp;
-    const Real smag = v.smagorinsky * v.smagorinsky * dp2, blin = Real(2) / 3 * v.blin * dp2;
-    Real* tau = tau_.data();
-    std::visit(
-        [&](const auto& kernel) {
-            using K = std::decay_t<decltype(kernel)>;
-            if (!pairs) {
-                exec::for_each(pv.n, SpsStress<K>{pv, gv, kernel, smag, blin, tau});
-                return;
-            }
-            // Half pair list: i gains vol_j (v_j - v_i) (x) grad W_ij and j the mirror term
-            // vol_i (v_j - v_i) (x) grad W_ij (fluid particles only).
-            const Real support2 = support_ * support_;
-            const Real* vol = vol_.data(); // m / rho, from update_pressure()
-            exec::for_each_pair_w<6>(
-                list_, pv.n, buffers_, [=](Index i) { return GradientSide::of(pv, vol, i); },
-                [=](const GradientSide& a, Index, Index j, Real* di, Real* dj) {
-                    const bool fj = pv.is_fluid(j);
-                    if (!a.fluid && !fj) return;
-                    const Vec3 r = gv.separation(a.x, pv.pos(j));
-                    const Real r2 = dot(r, r);
-                    if (r2 >= support2) return;
-                    const Vec3 gw = kernel.grad_over_r(std::sqrt(r2)) * r;
-                    const Vec3 dv = pv.vel(j) - a.v;
-                    if (a.fluid) add_symmetric_gradient(di, vol[j], dv, gw);
-                    if (fj) add_symmetric_gradient(dj, a.vol, dv, gw);
-                },
-                [=](Index i, const Real* d) {
-                    Real* t = tau + 6 * i;
-                    if (!pv.is_fluid(i)) {
-                        for (int k = 0; k < 6; ++k) t[k] = 0;
-                        return;
-                    }
-                    sps_tau(d, smag, blin, 1 / pv.rho[i], t);
-                });
-        },
-        models_.kernel);
+    return {v->smagorinsky * v->smagorinsky * dp2, Real(2) / 3 * v->blin * dp2};
 }
 
 void SphSolver::update_pressure() {
@@ -189,7 +152,6 @@ template <class F> void SphSolver::with_pair_terms(F&& f, bool pairs) {
     update_pressure();
     update_viscosity(pairs);
     const bool sps = std::holds_alternative<models::LaminarSpsViscosity>(models_.viscosity);
-    if (sps) compute_sps_stress(pairs);
     auto pv = set_.view();
     std::visit(
         [&](const auto& kernel, const auto& visc, const auto& diff) {
@@ -197,7 +159,7 @@ template <class F> void SphSolver::with_pair_terms(F&& f, bool pairs) {
             using V = std::decay_t<decltype(visc)>;
             using D = std::decay_t<decltype(diff)>;
             f(PairTerms<K, V, D>{pv, kernel, visc, diff, prho_.data(), cs_.data(), vol_.data(),
-                                 sps ? tau_.data() : nullptr, Real(0.5) * params_.dp,
+                                 sps ? set_.sps_tau.data() : nullptr, Real(0.5) * params_.dp,
                                  Real(0.01) * params_.h * params_.h});
         },
         models_.kernel, models_.viscosity, models_.diffusion);
@@ -209,30 +171,51 @@ void SphSolver::compute_forces() {
     const auto gv = grid_.view();
     const Real support2 = support_ * support_;
     const Vec3 gravity = params_.gravity;
+    const SpsConstants sps = sps_constants();
+    Real* tau = set_.sps_tau.data();
     with_pair_terms(
         [&](const auto& terms) {
-            using Side = typename std::decay_t<decltype(terms)>::Side;
-            exec::for_each_pair(
+            using Terms = std::decay_t<decltype(terms)>;
+            using Side = typename Terms::Side;
+            // a (3), drho, and for Laminar+SPS the symmetric velocity gradient (6)
+            constexpr bool gradient = Terms::viscosity_type::needs_velocity_gradient;
+            constexpr int W = gradient ? 10 : 4;
+            exec::for_each_pair_w<W>(
                 list_, pv.n, buffers_, [=](Index i) { return terms.side(i); },
-                [=](const Side& a, Index i, Index j, Vec3& acc_i, Real& drho_i, Real* out_j) {
+                [=](const Side& a, Index i, Index j, Real* acc_i, Real* out_j) {
                     const Side b = terms.side(j);
                     const Vec3 r = gv.separation(a.x, b.x);
                     const Real r2 = dot(r, r);
                     if (r2 >= support2) return;
                     const auto t = terms(a, i, b, j, r, r2);
-                    acc_i += b.m * t.g;
-                    drho_i += b.m * t.cont + t.d.i;
+                    acc_i[0] += b.m * t.g.x;
+                    acc_i[1] += b.m * t.g.y;
+                    acc_i[2] += b.m * t.g.z;
+                    acc_i[3] += b.m * t.cont + t.d.i;
                     out_j[0] -= a.m * t.g.x;
                     out_j[1] -= a.m * t.g.y;
                     out_j[2] -= a.m * t.g.z;
                     out_j[3] += a.m * t.cont + t.d.j;
+                    if constexpr (gradient) {
+                        // i gains vol_j (v_j - v_i) (x) grad W_ij, j the mirror term
+                        // vol_i (v_j - v_i) (x) grad W_ij (fluid particles only)
+                        const Vec3 dv = b.v - a.v;
+                        if (a.fluid) add_symmetric_gradient(acc_i + 4, b.vol, dv, t.grad_w);
+                        if (b.fluid) add_symmetric_gradient(out_j + 4, a.vol, dv, t.grad_w);
+                    }
                 },
-                [=](Index i, Vec3 acc, Real drho) {
-                    if (pv.is_fluid(i)) acc += gravity;
-                    pv.ax[i] = acc.x;
-                    pv.ay[i] = acc.y;
-                    pv.az[i] = acc.z;
-                    pv.drho[i] = drho;
+                // Runs after every pair is summed: the stress read above can be replaced.
+                [=](Index i, const Real* total) {
+                    const bool fluid = pv.is_fluid(i);
+                    pv.ax[i] = total[0] + (fluid ? gravity.x : 0);
+                    pv.ay[i] = total[1] + (fluid ? gravity.y : 0);
+                    pv.az[i] = total[2] + (fluid ? gravity.z : 0);
+                    pv.drho[i] = total[3];
+                    if constexpr (gradient) {
+                        Real* t = tau + 6 * i;
+                        for (int k = 0; k < 6; ++k) t[k] = 0;
+                        if (fluid) sps_tau(total + 4, sps.smag, sps.blin, 1 / pv.rho[i], t);
+                    }
                 });
         },
         true);
@@ -240,11 +223,16 @@ void SphSolver::compute_forces() {
 
 void SphSolver::compute_forces_gather() {
     const auto gv = grid_.view();
+    const SpsConstants sps = sps_constants();
+    const bool gradient = std::holds_alternative<models::LaminarSpsViscosity>(models_.viscosity);
+    tau_next_.assign(gradient ? set_.sps_tau.size() : 0, Real(0));
     with_pair_terms(
         [&](const auto& terms) {
-            exec::for_each(set_.size(), make_gather(terms, gv, params_.gravity));
+            exec::for_each(set_.size(), make_gather(terms, gv, params_.gravity, sps.smag, sps.blin,
+                                                    tau_next_.data()));
         },
         false);
+    if (gradient) set_.sps_tau.swap(tau_next_);
 }
 
 namespace {

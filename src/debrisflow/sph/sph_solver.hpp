@@ -56,7 +56,11 @@ public:
 private:
     void update_pressure();
     Real boundary_min_density() const;
-    void compute_sps_stress(bool pairs);
+    // Laminar+SPS constants (C_s dp)^2 and 2/3 C_I dp^2 (zeros for other viscosities).
+    struct SpsConstants {
+        Real smag = 0, blin = 0;
+    };
+    SpsConstants sps_constants() const;
     // Per-particle apparent viscosity (generalised-Newtonian models; constant otherwise).
     // Apparent viscosities of a generalised-Newtonian fluid: over the half pair list (`pairs`)
     // or by a per-particle gather over the cell grid.
@@ -72,7 +76,8 @@ private:
     models::TaitEos eos_;
     SphModels models_;
     neighbors::CellGrid grid_;
-    std::vector<Real> tau_, prho_, cs_, vol_;
+    std::vector<Real> prho_, cs_, vol_;
+    std::vector<Real> tau_next_; // SPS stress of the gather loop, swapped in after it
     neighbors::PairList list_;
     exec::ScatterBuffers buffers_;
     std::vector<Real> xref_, yref_, zref_; // positions at the last pair-list build
