@@ -33,6 +33,33 @@ void PairList::build(const GridView& grid, const particles::ParticleView& pv) {
     index_touched(n);
 }
 
+void PairList::compact(const std::vector<std::uint8_t>& keep) {
+    const Index n = Index(count_.size());
+    std::vector<Index> to(std::size_t(n), -1);
+    Index m = 0;
+    for (Index i = 0; i < n; ++i)
+        if (keep[std::size_t(i)]) to[std::size_t(i)] = m++;
+    // Order is kept, so a fluid-fluid pair stays in the row of its lower index.
+    std::vector<Index> count(std::size_t(m), 0), jj(std::size_t(m) * capacity_);
+    const std::size_t cap = capacity_;
+#pragma omp parallel for schedule(dynamic, 512)
+    for (Index i = 0; i < n; ++i) {
+        const Index r = to[std::size_t(i)];
+        if (r < 0) continue;
+        const Index* row = j_.data() + std::size_t(i) * cap;
+        Index* out = jj.data() + std::size_t(r) * cap;
+        Index c = 0;
+        for (Index k = 0; k < count_[std::size_t(i)]; ++k) {
+            const Index j = to[std::size_t(row[k])];
+            if (j >= 0) out[c++] = j;
+        }
+        count[std::size_t(r)] = c;
+    }
+    count_.swap(count);
+    j_.swap(jj);
+    index_touched(m);
+}
+
 void PairList::index_touched(Index n) {
     mask_.assign(std::size_t(n), 0);
     std::uint8_t* mask = mask_.data();

@@ -17,6 +17,10 @@ class PairList {
 public:
     // Builds the list; `radius` includes the skin.
     void build(const GridView& grid, const particles::ParticleView& pv);
+    // Drops the particles with keep[i] == 0 and their pairs and renumbers the rest in order (as
+    // ParticleSet::compact): the same list a build at the same positions would give, without
+    // the search. An outlet removing a few particles a step no longer forces a rebuild.
+    void compact(const std::vector<std::uint8_t>& keep);
     Index begin(Index i) const { return Index(i * capacity_); }
     Index count(Index i) const { return count_[i]; }
     const Index* neighbors() const { return j_.data(); }

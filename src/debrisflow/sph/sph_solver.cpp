@@ -438,8 +438,22 @@ void SphSolver::add_timings(time::Timings& t) const {
 }
 
 void SphSolver::remove_particles(const std::vector<std::uint8_t>& keep) {
+    const bool list_current =
+        list_valid_ && list_.particles() == set_.size() && xref_.size() == std::size_t(set_.size());
     set_.compact(keep);
-    list_valid_ = false;
+    if (!list_current) {
+        list_valid_ = false;
+        return;
+    }
+    // The remaining pairs and reference positions stay valid (Verlet criterion unchanged).
+    ScopedTimer timer(t_neighbors_);
+    list_.compact(keep);
+    for (auto* ref : {&xref_, &yref_, &zref_}) {
+        std::size_t w = 0;
+        for (std::size_t i = 0; i < keep.size(); ++i)
+            if (keep[i]) (*ref)[w++] = (*ref)[i];
+        ref->resize(w);
+    }
 }
 
 void SphSolver::remove_group(std::int16_t group) {
