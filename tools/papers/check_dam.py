@@ -87,7 +87,7 @@ def report(root, figures):
         ax[0].plot(rs, [found[r]["E"] for r in rs], "o-", label="debrisflow, reduced slice")
         if extra:
             ax[0].plot([r for r, _, _ in extra], [a["E"] for _, _, a in extra], "o",
-                       mfc="none", color="C0", label="other runs (earlier code, other seed)")
+                       mfc="none", color="C0", label="other realizations (earlier code, other seed, lagged SPS stress)")
         ax[0].plot([1.18], [E_EXP], "ks", label="experiment")
         ax[0].plot([1.18] * 3, E_PAPER_RUNS, "r^", label="paper SPH-DEM runs I–III")
         ax[0].set(xlabel="s / d95", ylabel="trapping efficiency E", ylim=(0, 1.05),

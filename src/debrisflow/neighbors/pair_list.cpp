@@ -39,15 +39,17 @@ void PairList::compact(const std::vector<std::uint8_t>& keep) {
     Index m = 0;
     for (Index i = 0; i < n; ++i)
         if (keep[std::size_t(i)]) to[std::size_t(i)] = m++;
-    // Order is kept, so a fluid-fluid pair stays in the row of its lower index.
-    std::vector<Index> count(std::size_t(m), 0), jj(std::size_t(m) * capacity_);
+    // In place, rows in ascending order: row i moves to row to[i] <= i, whose old content has
+    // already been moved, and within a row the write index never passes the read index. Only
+    // the non-empty rows are touched (a flume's boundary rows are empty). Order is kept, so a
+    // fluid-fluid pair stays in the row of its lower index.
+    std::vector<Index> count(std::size_t(m), 0);
     const std::size_t cap = capacity_;
-#pragma omp parallel for schedule(dynamic, 512)
-    for (Index i = 0; i < n; ++i) {
+    for (const Index i : rows_) {
         const Index r = to[std::size_t(i)];
         if (r < 0) continue;
         const Index* row = j_.data() + std::size_t(i) * cap;
-        Index* out = jj.data() + std::size_t(r) * cap;
+        Index* out = j_.data() + std::size_t(r) * cap;
         Index c = 0;
         for (Index k = 0; k < count_[std::size_t(i)]; ++k) {
             const Index j = to[std::size_t(row[k])];
@@ -56,7 +58,7 @@ void PairList::compact(const std::vector<std::uint8_t>& keep) {
         count[std::size_t(r)] = c;
     }
     count_.swap(count);
-    j_.swap(jj);
+    j_.resize(std::size_t(m) * cap);
     index_touched(m);
 }
 
