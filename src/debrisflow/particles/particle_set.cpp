@@ -45,7 +45,7 @@ void ParticleSet::add(Vec3 pos, Vec3 vel, Real density, Real m, Kind k, std::int
     vy_old.push_back(vel.y);
     vz_old.push_back(vel.z);
     rho_old.push_back(density);
-    sps_tau.resize(sps_tau.size() + sps_width, Real(0));
+    if (!sps_tau.empty()) sps_tau.resize(sps_tau.size() + sps_width, Real(0));
     kind.push_back(std::uint8_t(k));
     group.push_back(grp);
     id.push_back(next_id_++);
@@ -62,6 +62,7 @@ void ParticleSet::permute(const std::vector<Index>& perm) {
         for (Index i = 0; i < n; ++i) out[i] = field[perm[i]];
         field.swap(out);
     });
+    if (sps_tau.empty()) return;
     std::vector<Real> tau(sps_tau.size());
     for (std::size_t i = 0; i < perm.size(); ++i)
         for (std::size_t k = 0; k < sps_width; ++k)
@@ -77,6 +78,7 @@ void ParticleSet::compact(const std::vector<std::uint8_t>& keep) {
             if (keep[i]) field[w++] = field[i];
         field.resize(w);
     });
+    if (sps_tau.empty()) return;
     std::size_t w = 0;
     for (std::size_t i = 0; i < keep.size(); ++i)
         if (keep[i])

@@ -36,7 +36,8 @@ public:
     std::vector<Real> mu; // apparent dynamic viscosity [Pa s]; 0 for artificial viscosity
     std::vector<Real> vx_old, vy_old, vz_old, rho_old; // state at t_(n-1), Verlet scheme only
     // SPS stress / rho^2 from the last force evaluation (Laminar+SPS only), 6 per particle
-    // (xx, xy, xz, yy, yz, zz); zero for new particles.
+    // (xx, xy, xz, yy, yz, zz); zero for new particles. Empty (no memory) until the solver
+    // of a Laminar+SPS case sizes it.
     std::vector<Real> sps_tau;
     std::vector<std::uint8_t> kind;
     std::vector<std::int16_t> group;

@@ -152,6 +152,8 @@ template <class F> void SphSolver::with_pair_terms(F&& f, bool pairs) {
     update_pressure();
     update_viscosity(pairs);
     const bool sps = std::holds_alternative<models::LaminarSpsViscosity>(models_.viscosity);
+    if (sps && set_.sps_tau.size() != 6 * std::size_t(set_.size()))
+        set_.sps_tau.assign(6 * std::size_t(set_.size()), Real(0)); // first evaluation
     auto pv = set_.view();
     std::visit(
         [&](const auto& kernel, const auto& visc, const auto& diff) {
@@ -172,7 +174,6 @@ void SphSolver::compute_forces() {
     const Real support2 = support_ * support_;
     const Vec3 gravity = params_.gravity;
     const SpsConstants sps = sps_constants();
-    Real* tau = set_.sps_tau.data();
     with_pair_terms(
         [&](const auto& terms) {
             using Terms = std::decay_t<decltype(terms)>;
@@ -180,6 +181,7 @@ void SphSolver::compute_forces() {
             // a (3), drho, and for Laminar+SPS the symmetric velocity gradient (6)
             constexpr bool gradient = Terms::viscosity_type::needs_velocity_gradient;
             constexpr int W = gradient ? 10 : 4;
+            Real* tau = set_.sps_tau.data(); // sized by with_pair_terms
             exec::for_each_pair_w<W>(
                 list_, pv.n, buffers_, [=](Index i) { return terms.side(i); },
                 [=](const Side& a, Index i, Index j, Real* acc_i, Real* out_j) {
@@ -225,7 +227,7 @@ void SphSolver::compute_forces_gather() {
     const auto gv = grid_.view();
     const SpsConstants sps = sps_constants();
     const bool gradient = std::holds_alternative<models::LaminarSpsViscosity>(models_.viscosity);
-    tau_next_.assign(gradient ? set_.sps_tau.size() : 0, Real(0));
+    tau_next_.assign(gradient ? 6 * std::size_t(set_.size()) : 0, Real(0));
     with_pair_terms(
         [&](const auto& terms) {
             exec::for_each(set_.size(), make_gather(terms, gv, params_.gravity, sps.smag, sps.blin,
