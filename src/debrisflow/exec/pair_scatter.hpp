@@ -65,26 +65,4 @@ void for_each_pair_w(const neighbors::PairList& list, Index n, ScatterBuffers& b
     }
 }
 
-// The same loop with a vector and a scalar per particle: pair(load(i), i, j, vec_i, s_i,
-// out_j) adds particle i's contribution to (vec_i, s_i) and particle j's to out_j[0..3];
-// out(i, vec, s) receives each particle's totals.
-template <class Load, class Pair, class Out>
-void for_each_pair(const neighbors::PairList& list, Index n, ScatterBuffers& buf, const Load& load,
-                   const Pair& pair, const Out& out) {
-    for_each_pair_w<4>(
-        list, n, buf, load,
-        [&](const auto& data_i, Index i, Index j, Real* acc, Real* out_j) {
-            Vec3 vi{acc[0], acc[1], acc[2]};
-            Real si = acc[3];
-            pair(data_i, i, j, vi, si, out_j);
-            acc[0] = vi.x;
-            acc[1] = vi.y;
-            acc[2] = vi.z;
-            acc[3] = si;
-        },
-        [&](Index i, const Real* t) {
-            out(i, Vec3{t[0], t[1], t[2]}, t[3]);
-        });
-}
-
 } // namespace debrisflow::exec
