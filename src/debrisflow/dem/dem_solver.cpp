@@ -107,11 +107,17 @@ void DemSolver::rebuild() {
     });
     const auto& prims = walls_.primitives();
     const auto& wl = walls_.walls();
+    // Active primitives with their boxes: most grains are far from most faces of a flume's
+    // structures, and the box test rejects them before the closest-point search.
+    std::vector<std::pair<std::size_t, PrimitiveBounds>> active;
+    for (std::size_t k = 0; k < prims.size(); ++k)
+        if (wl[std::size_t(prims[k].wall)].active)
+            active.emplace_back(k, PrimitiveBounds::of(prims[k]));
     wall_slots_.build(n, [&](Index i, auto&& emit) {
         const Vec3 p = g.pos[i];
         const Real reach = g.radius[i] + skin;
-        for (std::size_t k = 0; k < prims.size(); ++k) {
-            if (!wl[std::size_t(prims[k].wall)].active) continue;
+        for (const auto& [k, box] : active) {
+            if (!box.may_reach(p, reach)) continue;
             const Vec3 q = closest_point(prims[k], p);
             if (wall_distance(prims[k], p, q) < reach) emit(Index(k), std::uint32_t(k));
         }

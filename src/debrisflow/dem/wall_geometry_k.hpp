@@ -92,6 +92,30 @@ DF_HD inline Real wall_distance(const WallPrimitive& w, Vec3 p, Vec3 q) {
     return norm(p - q);
 }
 
+// Axis-aligned box around a primitive (a plane: unbounded); the neighbour search skips a
+// primitive whose box, grown by the reach, does not hold the grain centre. Exact as a filter:
+// the closest point lies in the box, so a centre within reach of it lies in the grown box.
+struct PrimitiveBounds {
+    Vec3 lo, hi;
+    bool bounded = false;
+    DF_HD static PrimitiveBounds of(const WallPrimitive& w) {
+        if (w.type == PrimitiveType::plane) return {};
+        PrimitiveBounds b{w.a, w.a, true};
+        for (const Vec3 q : {w.b, w.c})
+            for (int d = 0; d < 3; ++d) {
+                b.lo[d] = q[d] < b.lo[d] ? q[d] : b.lo[d];
+                b.hi[d] = q[d] > b.hi[d] ? q[d] : b.hi[d];
+            }
+        return b;
+    }
+    DF_HD bool may_reach(Vec3 p, Real reach) const {
+        if (!bounded) return true;
+        for (int d = 0; d < 3; ++d)
+            if (p[d] < lo[d] - reach || p[d] > hi[d] + reach) return false;
+        return true;
+    }
+};
+
 // Whether q lies on triangle w (within tol): a contact whose closest point lies on a triangle
 // already in contact is the same contact seen from a neighbouring triangle (shared edge or
 // vertex), and is skipped so that flat and convex meshes push once.
