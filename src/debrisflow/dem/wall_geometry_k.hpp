@@ -2,6 +2,7 @@
 #include "debrisflow/core/hd.hpp"
 #include "debrisflow/core/vec3_k.hpp"
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <type_traits>
 
@@ -101,11 +102,10 @@ struct PrimitiveBounds {
     DF_HD static PrimitiveBounds of(const WallPrimitive& w) {
         if (w.type == PrimitiveType::plane) return {};
         PrimitiveBounds b{w.a, w.a, true};
-        for (const Vec3 q : {w.b, w.c})
-            for (int d = 0; d < 3; ++d) {
-                b.lo[d] = q[d] < b.lo[d] ? q[d] : b.lo[d];
-                b.hi[d] = q[d] > b.hi[d] ? q[d] : b.hi[d];
-            }
+        for (int d = 0; d < 3; ++d) {
+            b.lo[d] = std::fmin(w.a[d], std::fmin(w.b[d], w.c[d]));
+            b.hi[d] = std::fmax(w.a[d], std::fmax(w.b[d], w.c[d]));
+        }
         return b;
     }
     DF_HD bool may_reach(Vec3 p, Real reach) const {
