@@ -101,7 +101,8 @@ struct PrimitiveBounds {
     bool bounded = false;
     DF_HD static PrimitiveBounds of(const WallPrimitive& w) {
         if (w.type == PrimitiveType::plane) return {};
-        PrimitiveBounds b{w.a, w.a, true};
+        PrimitiveBounds b;
+        b.bounded = true;
         for (int d = 0; d < 3; ++d) {
             b.lo[d] = std::fmin(w.a[d], std::fmin(w.b[d], w.c[d]));
             b.hi[d] = std::fmax(w.a[d], std::fmax(w.b[d], w.c[d]));
