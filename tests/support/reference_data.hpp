@@ -61,4 +61,34 @@ inline std::map<std::string, double> read_key_values(const std::string& path) {
     return out;
 }
 
+// A CSV table with a header line: one map from column name to cell text per data row.
+inline std::vector<std::map<std::string, std::string>> read_table(const std::string& path) {
+    std::ifstream f(path);
+    if (!f) throw std::runtime_error("missing reference file " + path);
+    auto split = [](const std::string& line) {
+        std::vector<std::string> cells;
+        std::string cell;
+        std::istringstream ss(line);
+        while (std::getline(ss, cell, ',')) cells.push_back(cell);
+        return cells;
+    };
+    std::vector<std::map<std::string, std::string>> rows;
+    std::string line;
+    std::vector<std::string> header;
+    while (std::getline(f, line)) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        if (line.empty() || line[0] == '#') continue;
+        if (header.empty()) {
+            header = split(line);
+            continue;
+        }
+        const auto cells = split(line);
+        std::map<std::string, std::string> row;
+        for (std::size_t k = 0; k < cells.size() && k < header.size(); ++k)
+            row[header[k]] = cells[k];
+        rows.push_back(std::move(row));
+    }
+    return rows;
+}
+
 } // namespace debrisflow::test

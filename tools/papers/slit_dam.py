@@ -1,6 +1,8 @@
 """Section B of ../shared/reference/seed_experiments.md, two-level DEM slit dam (one 5 cm slit,
 30 degree flume): discharge through the slit for Type A (fine grains only) and Type B (fine
-grains + 4 cm boulders). Runs are named B_slitA_sd<n> and B_slitB_sd<n>_<k>b."""
+grains + 4 cm boulders). Runs are named B_slitA_sd<n> and B_slitB_sd<n>_<k>b; a suffix
+_seed<k> marks another realization (another random packing of the same grains) and _n<count>
+another grain count (A-SD5(2): the paper's second SD5 case, 10,697 grains)."""
 import glob
 import os
 import re
@@ -14,7 +16,19 @@ from vtk_series import frames, read_vtu
 PEAK_TIME = 0.85  # s, discharge peak of every Type A case in the paper
 SMOOTH = 0.1  # s, running mean of the discharge
 DAM_EXIT = 1.24  # x of the dam's downstream face [m] (cases/papers/slit_dam_dem/*.toml)
-NAME = re.compile(r"B_slit([AB])_sd(\d+)(?:_(\d+)b)?$")
+NAME = re.compile(r"B_slit([AB])_sd(\d+)(?:_(\d+)b)?(?:_seed(\d+)|_n(\d+))?$")
+SECOND_COUNT = {5: 10697}  # grain count of the paper's A-SDn(2) cases
+
+
+def label_of(m):
+    """A-SD5, A-SD5 seed 2, A-SD5(2), B-SD5-16B from a NAME match."""
+    label = f"{m.group(1)}-SD{m.group(2)}" + (f"-{m.group(3)}B" if m.group(3) else "")
+    if m.group(5):
+        second = SECOND_COUNT.get(int(m.group(2))) == int(m.group(5))
+        label += "(2)" if second else f" n={m.group(5)}"
+    if m.group(4):
+        label += f" seed {m.group(4)}"
+    return label
 
 
 def boulders_through(run):
@@ -48,29 +62,68 @@ def analyse(run):
                 half=t[after[0]] if len(after) else float("nan"), end=t[-1])
 
 
+def peak_over(a, end):
+    """Raw and 0.1 s mean peak of a run's discharge up to time end."""
+    return [float(np.max(a[k][a["t"] <= end])) for k in ("q", "qs")]
+
+
 def size_effect(curves):
     """The paper's grain-size effect on the Type A peak: finer grains than SD5 peak higher (1 cm
     grains ~50 % below 0.125-0.167 cm ones; no effect beyond s/d = 30). Ratio of each finer
-    Type A run's peak to A-SD5's, raw and 0.1 s mean, up to the shorter run's end."""
-    if "A-SD5" not in curves:
+    Type A run's peak to A-SD5's (the mean over its realizations of the paper's 12,393 grains,
+    with the ratio's range over them), raw and 0.1 s mean, up to the shorter run's end."""
+    sd5 = [a for label, (a, _) in curves.items()
+           if label == "A-SD5" or re.fullmatch(r"A-SD5 seed \d+", label)]
+    if not sd5:
         return []
-    base = curves["A-SD5"][0]
     rows = []
     for label, (a, _) in sorted(curves.items()):
-        if not label.startswith("A-SD") or label == "A-SD5":
+        if not re.fullmatch(r"A-SD\d+", label) or label == "A-SD5":
             continue
-        end = min(a["end"], base["end"])
-        ref = [np.max(base[k][base["t"] <= end]) for k in ("q", "qs")]
-        own = [np.max(a[k][a["t"] <= end]) for k in ("q", "qs")]
-        rows.append([label, f"{own[0]:.2f} / {ref[0]:.2f} = {own[0] / ref[0]:.2f}",
-                     f"{own[1]:.2f} / {ref[1]:.2f} = {own[1] / ref[1]:.2f}", f"{end:.2f} s"])
+        end = min([a["end"]] + [b["end"] for b in sd5])
+        ref = np.array([peak_over(b, end) for b in sd5])  # realizations x (raw, mean)
+        own = peak_over(a, end)
+        cells = []
+        for k in range(2):
+            mean = ref[:, k].mean()
+            text = f"{own[k]:.2f} / {mean:.2f} = {own[k] / mean:.2f}"
+            if len(sd5) > 1:
+                text += f" ({own[k] / ref[:, k].max():.2f}–{own[k] / ref[:, k].min():.2f})"
+            cells.append(text)
+        rows.append([label] + cells + [f"{end:.2f} s", str(len(sd5))])
     if not rows:
         return []
-    return (["Grain-size effect: peak discharge of the finer Type A runs against A-SD5 over the "
-             "same span (the paper: SD5 peaks ~50 % below SD30/SD40, i.e. their ratio is ~2, and "
-             "the effect vanishes from s/d = 30):", ""]
+    return (["Grain-size effect: peak discharge of the finer Type A runs against A-SD5 (mean "
+             "over its realizations, the ratio's range over them in brackets) over the same span "
+             "(the paper: SD5 peaks ~50 % below SD30/SD40, i.e. their ratio is ~2, and the effect "
+             "vanishes from s/d = 30):", ""]
             + table(["case", "peak / A-SD5 peak, raw [kg/s]", "same, 0.1 s mean [kg/s]",
-                     "over 0 to"], rows) + [""])
+                     "over 0 to", "A-SD5 realizations"], rows) + [""])
+
+
+def spread(curves):
+    """Peak discharge and its time over the realizations of each Type A case (mean, sample
+    standard deviation, range): how much the chaotic grain dynamics move them."""
+    groups = {}
+    for label, (a, _) in curves.items():
+        groups.setdefault(re.sub(r" seed \d+$", "", label), []).append(a)
+    rows = []
+    for label, runs in sorted(groups.items()):
+        if len(runs) < 2:
+            continue
+        end = min(a["end"] for a in runs)
+        p = np.array([peak_over(a, end) for a in runs])
+        ts = np.array([a["t_peak_s"] for a in runs])
+        e = np.array([a["E"] for a in runs])
+        rows.append([label, str(len(runs))]
+                    + [f"{x.mean():.2f} ± {x.std(ddof=1):.2f} ({x.min():.2f}–{x.max():.2f})"
+                       for x in (p[:, 0], p[:, 1], ts, e)])
+    if not rows:
+        return []
+    return (["Spread over realizations (another random packing of the same grains; mean ± "
+             "sample standard deviation, range in brackets):", ""]
+            + table(["case", "runs", "peak, raw [kg/s]", "peak, 0.1 s mean [kg/s]",
+                     "peak time, 0.1 s mean [s]", "E"], rows) + [""])
 
 
 def report(root, figures):
@@ -80,7 +133,7 @@ def report(root, figures):
         m = NAME.search(run)
         if not m or not os.path.isdir(run):
             continue
-        label = f"{m.group(1)}-SD{m.group(2)}" + (f"-{m.group(3)}B" if m.group(3) else "")
+        label = label_of(m)
         a = analyse(run)
         n, mass = grain_mass(run)
         if a is None:
@@ -100,14 +153,20 @@ def report(root, figures):
                     "peak time [s] (0.1 s mean)",
                     "passed [kg]", "E", "boulders through"], rows)
     lines.append("")
+    lines += spread(curves)
     lines += size_effect(curves)
     if figures and curves:
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
         fig, ax = plt.subplots(1, 2, figsize=(11, 4))
-        for k, (label, (a, b)) in enumerate(sorted(curves.items())):
-            ax[0].plot(a["t"], a["qs"], lw=1, c=f"C{k}", label=label)
+        main = sorted({re.sub(r" seed \d+$", "", label) for label in curves})
+        for label, (a, b) in sorted(curves.items()):
+            base = re.sub(r" seed \d+$", "", label)
+            k = main.index(base)
+            ax[0].plot(a["t"], a["qs"], lw=1 if base == label else 0.6, c=f"C{k}",
+                       alpha=1 if base == label else 0.5,
+                       label=label if base == label else None)
             if b:
                 ax[1].step([x[0] for x in b], [x[1] for x in b], where="post", c=f"C{k}",
                            label=label)

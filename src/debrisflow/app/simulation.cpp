@@ -57,6 +57,9 @@ Simulation::Simulation(io::CaseSpec spec) : spec_(std::move(spec)) {
             rigid_->attach_grains(&obstacles_);
             dem_->attach_obstacles(&obstacles_);
         }
+        if (solver_ && spec_.dem.fluid_drag != "none")
+            sph_dem_ =
+                std::make_unique<coupling::SphDemCoupling>(*solver_, *dem_, spec_.dem.fluid_drag);
         const auto& p = spec_.dem.params;
         const auto stable = dem_->stability_dt();
         if (p.dt > 0 && p.dt > stable.dt)
@@ -228,6 +231,13 @@ io::RunReport Simulation::run(const RunOptions& opt) {
                               grains_.size(), grains_.total_mass(), dem_walls_.walls().size(),
                               dem_->dt(), report.dem_dt.limiter, dem_->automatic_dt().dt,
                               spec_.dem.params.subcycle ? ", sub-cycled inside the SPH step" : ""));
+    if (sph_dem_)
+        log_.line(fmt::format("sph-dem: grains feel the fluid's pressure gradient and {} drag "
+                              "(unresolved coupling, kernel support {:.4g} m)",
+                              sph_dem_->drag_law(), solver_->support()));
+    else if (dem_ && solver_)
+        log_.line("sph-dem: grains and fluid do not exchange forces (set [dem] fluid_drag to "
+                  "couple them)");
     if (rigid_)
         for (std::size_t b = 0; b < rigid_->bodies().size(); ++b) {
             const auto& s = rigid_->bodies()[b];
@@ -258,7 +268,8 @@ io::RunReport Simulation::run(const RunOptions& opt) {
     time::Integrator integ;
     if (solver_) integ.add_phase(solver_.get());
     if (dem_) integ.add_phase(dem_.get());
-    if (rigid_) integ.add_phase(rigid_.get()); // after SPH: it sums the fluid forces
+    if (sph_dem_) integ.add_phase(sph_dem_.get()); // after SPH and DEM: adds to both
+    if (rigid_) integ.add_phase(rigid_.get());     // after SPH: it sums the fluid forces
     if (fem_) integ.add_phase(fem_.get());
     integ.set_reorder_every(solver_ ? spec_.sph.reorder_every : 1);
     // Cases without fluid take one force evaluation per step (velocity Verlet in the DEM and

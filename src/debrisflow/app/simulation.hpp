@@ -1,6 +1,7 @@
 #pragma once
 #include "debrisflow/core/log.hpp"
 #include "debrisflow/coupling/dem_fem.hpp"
+#include "debrisflow/coupling/sph_dem.hpp"
 #include "debrisflow/coupling/sph_fem.hpp"
 #include "debrisflow/dem/dem_solver.hpp"
 #include "debrisflow/fem/fem_solver.hpp"
@@ -76,6 +77,7 @@ private:
     std::unique_ptr<fem::FemSolver> fem_;
     std::unique_ptr<coupling::SphFemCoupling> sph_fem_; // with a fluid
     std::unique_ptr<coupling::DemFemCoupling> dem_fem_; // with grains or bodies
+    std::unique_ptr<coupling::SphDemCoupling> sph_dem_; // grains in a fluid ([dem] fluid_drag)
     dem::ObstacleSet obstacles_;                        // grain-body contact link
     bool settled_ = false;
     std::vector<std::unique_ptr<flow::FluidInlet>> inlets_;

@@ -42,7 +42,15 @@ DemSolver::DemSolver(const DemParams& params, GrainSet& grains, WallSet& walls,
 
 time::DtLimit DemSolver::stable_dt() const {
     if (params_.subcycle) return {std::numeric_limits<Real>::max(), "sub-cycled"};
+    if (drag_dt() < dt_) return {drag_dt(), "fluid drag"};
     return {dt_, params_.dt > 0 ? "user dt" : auto_dt_.limiter};
+}
+
+Real DemSolver::drag_dt() const {
+    // Forward drag dv/dt = -(beta/m) v is stable for h beta/m < 2; half of that keeps the
+    // relaxation monotone.
+    if (!fluid_ || fluid_->max_rate <= 0) return std::numeric_limits<Real>::max();
+    return Real(0.5) / fluid_->max_rate;
 }
 
 void DemSolver::update_neighbors(bool) {
@@ -86,6 +94,7 @@ void DemSolver::rebuild() {
         grain_slots_.permute(perm);
         wall_slots_.permute(perm);
         obstacle_slots_.permute(perm);
+        if (fluid_) fluid_->permute(perm);
         build_grid();
     }
     const GrainView g = grains_.view();
@@ -283,6 +292,12 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
     ContactHistory* oh = obstacle_slots_.history();
     const ObstacleSphere* osph = obstacles_ ? obstacles_->spheres.data() : nullptr;
     const Vec3* ocom = obstacles_ ? obstacles_->body_com.data() : nullptr;
+    // fluid loads (unresolved SPH-DEM coupling): held force plus drag with the grain's velocity
+    if (fluid_) fluid_->resize(std::size_t(n));
+    const Vec3* ffix = fluid_ ? fluid_->force.data() : nullptr;
+    const Vec3* fu = fluid_ ? fluid_->u.data() : nullptr;
+    const Real* fbeta = fluid_ ? fluid_->beta.data() : nullptr;
+    Vec3* fimp = fluid_ && ends_step ? fluid_->impulse.data() : nullptr;
 #pragma omp parallel reduction(+ : touching, fsum) if (n > parallel_min)
     {
         std::vector<Real> local(6 * nw, 0), obody(6 * nb, 0);
@@ -384,6 +399,11 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
                     ++touching;
                 }
             }
+            if (ffix) {
+                const Vec3 ff = ffix[i] + fbeta[i] * (fu[i] - hot[i].v);
+                f += ff;
+                if (fimp) fimp[i] += current_h * ff;
+            }
             if (plane) f.y = 0, t.x = 0, t.z = 0;
             if (half > 0) {
                 const Real im = g.inv_mass[i], ii = g.inv_inertia[i];
@@ -411,6 +431,7 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
         }
         o.time += current_h_;
     }
+    if (fimp) fluid_->time += current_h_;
     contacts_ = touching;
     sum_contact_force_ = fsum;
     for (std::size_t w = 0; w < nw; ++w) {
@@ -482,7 +503,7 @@ void DemSolver::advance(Real dt) {
         step(dt);
         return;
     }
-    const long n = std::max(1L, long(std::ceil(dt / dt_ - 1e-9)));
+    const long n = std::max(1L, long(std::ceil(dt / std::min(dt_, drag_dt()) - 1e-9)));
     for (long s = 0; s < n; ++s) step(dt / Real(n));
 }
 
@@ -499,6 +520,7 @@ void DemSolver::remove_grains(const std::vector<std::uint8_t>& keep) {
         if (keep[std::size_t(i)]) kept.push_back(i);
     if (kept.size() == std::size_t(grains_.size())) return;
     grains_.select(kept);
+    if (fluid_) fluid_->select(kept);
     for (auto* slots : {&grain_slots_, &wall_slots_, &obstacle_slots_}) slots->remap(kept);
     obstacle_builds_seen_ = -1;
     rebuild();
@@ -508,6 +530,7 @@ void DemSolver::grains_added(Index old_count) {
     evaluated_ = false;
     std::vector<Index> from(std::size_t(grains_.size()), -1);
     for (Index i = 0; i < old_count; ++i) from[std::size_t(i)] = i;
+    if (fluid_) fluid_->permute(from);
     for (auto* slots : {&grain_slots_, &wall_slots_, &obstacle_slots_}) slots->remap(from);
     obstacle_builds_seen_ = -1;
     // New sizes may need a wider search and a shorter step (the step never grows).

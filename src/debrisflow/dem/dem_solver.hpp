@@ -1,6 +1,7 @@
 #pragma once
 #include "debrisflow/dem/contact_slots.hpp"
 #include "debrisflow/dem/dem_params.hpp"
+#include "debrisflow/dem/fluid_load.hpp"
 #include "debrisflow/dem/grain_contact_k.hpp"
 #include "debrisflow/dem/grain_set.hpp"
 #include "debrisflow/dem/materials.hpp"
@@ -56,6 +57,12 @@ public:
     void include_sizes(const GrainSet& prototypes);
     // Grains also collide with the spheres of rigid bodies in `o` (null: none).
     void attach_obstacles(ObstacleSet* o) { obstacles_ = o; }
+    // Grains also feel the fluid loads in `f` (null: none); the DEM keeps its arrays sized and
+    // ordered with the grains and limits its sub-step to 0.5 m / beta (explicit drag).
+    void attach_fluid(FluidLoad* f) {
+        fluid_ = f;
+        if (f) f->resize(std::size_t(grains_.size()));
+    }
     // Sets every grain's velocity and spin to zero (end of settling).
     void stop_grains();
 
@@ -94,6 +101,9 @@ private:
     neighbors::CellGrid grid_;
     ContactSlots grain_slots_, wall_slots_, obstacle_slots_;
     ObstacleSet* obstacles_ = nullptr;
+    FluidLoad* fluid_ = nullptr;
+    // Largest step the explicit fluid drag allows (infinite without a fluid).
+    Real drag_dt() const;
     std::uint64_t obstacles_seen_ = ~std::uint64_t(0);
     std::uint64_t walls_seen_ = ~std::uint64_t(0); // WallSet::layout() of the last rebuild
     long obstacle_builds_seen_ = -1;

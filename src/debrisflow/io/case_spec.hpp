@@ -96,10 +96,11 @@ struct DemSpec {
     dem::DemParams params;
     std::vector<dem::Material> materials;
     std::vector<dem::PairOverride> overrides;
-    Real thickness = 0;       // 2D: disc thickness [m] (mass of a disc, as PFC2D)
-    bool settle = false;      // settle under gravity before t = 0
-    Real settle_ratio = 0.01; // stop when mean unbalanced / mean contact force < this
-    Real settle_max_time = 2; // [s] of settling before giving up
+    Real thickness = 0;              // 2D: disc thickness [m] (mass of a disc, as PFC2D)
+    bool settle = false;             // settle under gravity before t = 0
+    Real settle_ratio = 0.01;        // stop when mean unbalanced / mean contact force < this
+    Real settle_max_time = 2;        // [s] of settling before giving up
+    std::string fluid_drag = "none"; // drag law of the SPH-DEM coupling (none: no coupling)
     std::vector<GrainsSpec> grains;
     std::vector<FeedSpec> feeds;
 };

@@ -1,4 +1,5 @@
 #include "debrisflow/io/dem_reader.hpp"
+#include "debrisflow/coupling/drag_laws_k.hpp"
 #include "debrisflow/dem/contact_laws_k.hpp"
 #include <algorithm>
 #include <filesystem>
@@ -271,6 +272,13 @@ void read_dem(const ConfigTable& root, CaseSpec& c) {
     c.dem.settle_ratio = t->positive("settle_ratio", 0.01);
     c.dem.settle_max_time = t->positive("settle_max_time", 2);
     if (c.dim == 2) c.dem.thickness = t->positive("thickness");
+    std::vector<std::string> drags{"none"};
+    for (const auto& name : coupling::DragRegistry::names()) drags.push_back(name);
+    c.dem.fluid_drag = t->choice("fluid_drag", drags, "none");
+    if (c.dem.fluid_drag != "none" && c.fluids.empty())
+        t->fail("fluid_drag", "couples grains to a fluid, but the case has no [[fluid]]");
+    if (c.dem.fluid_drag != "none" && c.dim != 3)
+        t->fail("fluid_drag", "the SPH-DEM drag coupling is 3D only (sphere drag laws)");
     t->finish();
 }
 
