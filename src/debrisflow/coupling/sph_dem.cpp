@@ -55,7 +55,7 @@ void SphDemCoupling::compute_forces() {
     load_.resize(n);
     if (load_.time > 0) {
         for (std::size_t i = 0; i < n; ++i) {
-            load_.reaction[i] = (1 / load_.time) * load_.impulse[i];
+            load_.handover[i] = load_.impulse[i];
             load_.impulse[i] = {};
         }
         load_.time = 0;
@@ -170,14 +170,16 @@ void SphDemCoupling::apply_reaction() {
     const particles::ParticleView pv = set.view();
     const dem::GrainView g = dem_.grains().view();
     const neighbors::GridView fgrid = fluid_grid_.view();
-    const Vec3* reaction = load_.reaction.data();
+    if (step_dt_ <= 0) return; // before the first step: nothing to hand over
+    const Vec3* handover = load_.handover.data();
+    const Real inv_dt = 1 / step_dt_;
     const Real* share = share_.data();
     const Index ng = g.n;
     std::visit(
         [&](const auto& kernel) {
 #pragma omp parallel for schedule(static)
             for (Index i = 0; i < ng; ++i) {
-                const Vec3 f = reaction[i];
+                const Vec3 f = inv_dt * handover[i]; // mean fluid force on the grain
                 if (share[i] <= 0 || (f.x == 0 && f.y == 0 && f.z == 0)) continue;
                 // fluid particle j takes -F_i V_j W_ij / S_f (the weights sum to one)
                 const Vec3 per_share = (-1 / share[i]) * f;

@@ -20,9 +20,10 @@ namespace debrisflow::coupling {
 //   fluid fraction          eps = 1 - sum_k V_k W_ik over the grains (clamped to >= 0.2)
 // and the grain feels F = -phi V_i grad p + phi beta (u - v_i) (beta from the drag law with the
 // slip of this evaluation; the DEM evaluates the drag with the grain's velocity at every
-// sub-step). The reaction, the impulse the DEM recorded over its last advance divided by its
-// duration, goes to the fluid particles around the grain with weights V_j W_ij / S_f, so the
-// exchanged momentum balances exactly (one fluid step behind). The fluid equations are not
+// sub-step). The reaction, the impulse the DEM recorded over its last advance divided by the
+// fluid step that follows, goes to the fluid particles around the grain with weights
+// V_j W_ij / S_f, so the exchanged momentum balances exactly (one fluid step behind, with the
+// symplectic scheme). The fluid equations are not
 // volume-averaged: the fluid does not see the room the grains take, which holds for dilute
 // mixtures. 3D only (sphere drag laws).
 class SphDemCoupling : public time::Phase {
@@ -35,7 +36,8 @@ public:
     // (their new loads) and adds the reaction to the fluid particles' accelerations. Runs after
     // the SPH and DEM force evaluations.
     void compute_forces() override;
-    void predictor(Real) override {}
+    // Remembers the step the fluid is about to take: the reaction is handed over in it.
+    void predictor(Real dt) override { step_dt_ = dt; }
     void corrector(Real) override {}
     void verlet_step(Real, bool) override {}
     time::DtLimit stable_dt() const override;
@@ -58,6 +60,7 @@ private:
     neighbors::CellGrid fluid_grid_, grain_grid_;
     std::vector<Real> share_; // S_f per grain (weights of the reaction)
     Vec3 total_force_;
+    Real step_dt_ = 0; // the fluid step in progress [s]
     double t_forces_ = 0;
 };
 

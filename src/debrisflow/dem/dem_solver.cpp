@@ -298,6 +298,7 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
     const Vec3* fu = fluid_ ? fluid_->u.data() : nullptr;
     const Real* fbeta = fluid_ ? fluid_->beta.data() : nullptr;
     Vec3* fimp = fluid_ && ends_step ? fluid_->impulse.data() : nullptr;
+    Vec3* ffelt = fluid_ ? fluid_->felt.data() : nullptr;
 #pragma omp parallel reduction(+ : touching, fsum) if (n > parallel_min)
     {
         std::vector<Real> local(6 * nw, 0), obody(6 * nb, 0);
@@ -402,7 +403,9 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
             if (ffix) {
                 const Vec3 ff = ffix[i] + fbeta[i] * (fu[i] - hot[i].v);
                 f += ff;
-                if (fimp) fimp[i] += current_h * ff;
+                // the kicks of this step gave the grain h/2 (f_n + f_n+1)
+                if (fimp) fimp[i] += (Real(0.5) * current_h) * (ffelt[i] + ff);
+                ffelt[i] = ff;
             }
             if (plane) f.y = 0, t.x = 0, t.z = 0;
             if (half > 0) {

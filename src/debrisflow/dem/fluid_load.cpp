@@ -12,12 +12,14 @@ template <class T> void gather(std::vector<T>& v, const std::vector<Index>& from
 } // namespace
 
 void FluidLoad::resize(std::size_t n) {
-    force.resize(n), u.resize(n), beta.resize(n, 0), impulse.resize(n), reaction.resize(n);
+    force.resize(n), u.resize(n), beta.resize(n, 0), impulse.resize(n), felt.resize(n),
+        handover.resize(n);
 }
 
 void FluidLoad::permute(const std::vector<Index>& perm) {
-    gather(force, perm), gather(u, perm), gather(beta, perm), gather(impulse, perm);
-    gather(reaction, perm);
+    gather(force, perm), gather(u, perm), gather(beta, perm), gather(impulse, perm),
+        gather(felt, perm);
+    gather(handover, perm);
 }
 
 void FluidLoad::select(const std::vector<Index>& kept) {

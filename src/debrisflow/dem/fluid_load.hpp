@@ -14,7 +14,8 @@ struct FluidLoad {
     std::vector<Vec3> u;        // local fluid velocity [m/s]
     std::vector<Real> beta;     // drag coefficient [kg/s]
     std::vector<Vec3> impulse;  // fluid impulse on the grain since the last collection [N s]
-    std::vector<Vec3> reaction; // mean fluid force over the last DEM advance [N]
+    std::vector<Vec3> felt;     // fluid force of the last DEM force evaluation [N]
+    std::vector<Vec3> handover; // impulse of the last DEM advance, for the next fluid step [N s]
     Real time = 0;              // time the impulses cover [s]
     Real max_rate = 0;          // largest beta / m [1/s]: explicit drag needs h < 0.5 m / beta
 

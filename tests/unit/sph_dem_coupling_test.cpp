@@ -1,0 +1,139 @@
+// Unresolved SPH-DEM coupling (coupling/sph_dem.hpp): momentum exchange and input checks.
+#include "debrisflow/core/error.hpp"
+#include "run_case.hpp"
+#include <cmath>
+#include <cstdio>
+#include <gtest/gtest.h>
+
+using namespace debrisflow;
+
+namespace {
+
+// A fully periodic box of fluid at rest without gravity and three grains shot through it: no
+// wall takes momentum, so the grains' loss must all show up in the fluid.
+const char* periodic_box = R"(
+name = "sph_dem_momentum"
+dimensions = 3
+dp = 0.02
+[time]
+end = 0.05
+[output]
+vtk = false
+[physics]
+gravity = [0, 0, 0]
+[domain]
+min = [0, 0, 0]
+max = [0.2, 0.2, 0.2]
+periodic = ["x", "y", "z"]
+[sph]
+rho0 = 1000
+c0 = 5
+viscosity = "laminar"
+nu = 1e-2
+[[fluid]]
+name = "water"
+shape = "box"
+min = [0.0, 0.0, 0.0]
+max = [0.2, 0.2, 0.2]
+[[material]]
+name = "sand"
+density = 2650
+law = "hertz_mindlin"
+youngs_modulus = 1e7
+poisson = 0.3
+restitution = 0.5
+friction = 0.3
+[[grains]]
+name = "a"
+material = "sand"
+packing = "single"
+position = [0.05, 0.1, 0.1]
+diameter = 0.005
+velocity = [1.0, 0.0, 0.2]
+[[grains]]
+name = "b"
+material = "sand"
+packing = "single"
+position = [0.15, 0.07, 0.12]
+diameter = 0.006
+velocity = [-0.5, 0.8, 0.0]
+[[grains]]
+name = "c"
+material = "sand"
+packing = "single"
+position = [0.1, 0.15, 0.05]
+diameter = 0.004
+velocity = [0.0, -0.3, 0.9]
+[dem]
+fluid_drag = "di_felice"
+reference_velocity = 1.0
+)";
+
+Vec3 fluid_momentum(particles::ParticleSet& s) {
+    Vec3 p{};
+    for (Index i = 0; i < s.size(); ++i)
+        if (s.kind[std::size_t(i)] == std::uint8_t(particles::Kind::fluid))
+            p += s.mass[std::size_t(i)] *
+                 Vec3{s.vx[std::size_t(i)], s.vy[std::size_t(i)], s.vz[std::size_t(i)]};
+    return p;
+}
+
+Vec3 grain_momentum(const dem::GrainSet& g) {
+    Vec3 p{};
+    for (Index i = 0; i < g.size(); ++i) p += g.mass[std::size_t(i)] * g.vel[std::size_t(i)];
+    return p;
+}
+
+} // namespace
+
+// Newton's third law across the coupling: the fluid gains what the grains lose, up to the
+// impulse of the last DEM advance (handed to the fluid at the next step).
+TEST(SphDemCoupling, ConservesMomentumInAPeriodicBox) {
+    app::Simulation sim(test::case_from_toml("sph_dem_momentum", periodic_box));
+    const Vec3 g0 = grain_momentum(sim.grains().grains());
+    const Vec3 total0 = g0 + fluid_momentum(sim.particles());
+    sim.run({"", true, 1, 0});
+    const Vec3 g1 = grain_momentum(sim.grains().grains());
+    const Vec3 total1 = g1 + fluid_momentum(sim.particles());
+    std::printf("grain momentum %.4g -> %.4g kg m/s; total changed by %.3g kg m/s\n", norm(g0),
+                norm(g1), norm(total1 - total0));
+    // the drag took a sizeable share of the grains' momentum ...
+    EXPECT_LT(norm(g1), 0.8 * norm(g0));
+    // ... and the total kept all but what the last step has yet to hand over
+    EXPECT_LT(norm(total1 - total0), 1e-3 * norm(g0 - g1));
+}
+
+// The coupling needs a fluid and 3D spheres; the reader says so with the key.
+TEST(SphDemCoupling, RejectsACaseWithoutFluid) {
+    const std::string toml = R"(
+name = "no_fluid"
+dimensions = 3
+[time]
+end = 0.1
+[domain]
+min = [0, 0, 0]
+max = [1, 1, 1]
+[[material]]
+name = "sand"
+density = 2650
+law = "hertz_mindlin"
+youngs_modulus = 1e7
+poisson = 0.3
+restitution = 0.5
+friction = 0.3
+[[grains]]
+name = "a"
+material = "sand"
+packing = "single"
+position = [0.5, 0.5, 0.5]
+diameter = 0.01
+[dem]
+fluid_drag = "di_felice"
+)";
+    try {
+        test::case_from_toml("sph_dem_no_fluid", toml);
+        FAIL() << "accepted fluid_drag without a fluid";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("fluid_drag"), std::string::npos) << e.what();
+    }
+}
