@@ -1,6 +1,7 @@
 // Compiles the host/device SPH and DEM functors with nvcc and launches them from a CUDA
 // kernel, so that every per-pair rule stays device-callable. No GPU is needed to compile this
 // file.
+#include "debrisflow/coupling/drag_laws_k.hpp"
 #include "debrisflow/dem/grain_contact_k.hpp"
 #include "debrisflow/kernels/cubic_spline_k.hpp"
 #include "debrisflow/kernels/wendland_c2_k.hpp"
@@ -91,8 +92,19 @@ struct RigidMotion {
     }
 };
 
+// Drag coefficients of the unresolved SPH-DEM coupling, one grain per thread.
+template <class Drag> struct GrainDrag {
+    const Real *d, *rho, *mu, *slip, *eps;
+    Real* beta;
+    DF_HD void operator()(Index i) const {
+        beta[i] = Drag::beta({d[i], rho[i], mu[i], slip[i], eps[i]});
+    }
+};
+
 void instantiate_all() {
     launch(0, DemContacts{});
+    launch(0, GrainDrag<coupling::DiFelice>{});
+    launch(0, GrainDrag<coupling::SchillerNaumann>{});
     launch(0, RigidMotion{});
     instantiate_kernel<kernels::WendlandC2>();
     instantiate_kernel<kernels::CubicSpline>();
