@@ -47,6 +47,8 @@ public:
     dem::DemSolver& grains() { return *dem_; }
     bool has_bodies() const { return rigid_ != nullptr; }
     rigid::BodySolver& bodies() { return *rigid_; }
+    // The unresolved SPH-DEM coupling ([dem] fluid_drag), or null.
+    coupling::SphDemCoupling* fluid_grain_coupling() { return sph_dem_.get(); }
     bool has_fem() const { return fem_ != nullptr; }
     fem::FemSolver& fem() { return *fem_; }
     const std::vector<std::unique_ptr<probes::Probe>>& probes() const { return probes_; }
