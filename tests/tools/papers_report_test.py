@@ -61,6 +61,18 @@ with tempfile.TemporaryDirectory() as d:
     assert abs(a["t_peak"] - 0.85) < 1e-9 and abs(a["peak"] - 10) < 1e-9, a
     assert abs(a["E"] - 0.25) < 1e-12, a
     assert abs(a["passed"] - 10 * 0.1 * np.sqrt(np.pi)) < 0.02, a  # integral of the pulse
+    # Realizations: run names map to labels, and the spread of two pulses of peak 10 and 12 is
+    # 11 +- sqrt(2) with the ratio of a finer run taken against their mean.
+    label = lambda name: slit_dam.label_of(slit_dam.NAME.search(name))
+    assert label("B_slitA_sd5") == "A-SD5" and label("B_slitA_sd5_seed2") == "A-SD5 seed 2"
+    assert label("B_slitA_sd5_n10697") == "A-SD5(2)" and label("B_slitB_sd5_16b") == "B-SD5-16B"
+    b2 = dict(a, q=1.2 * a["q"], qs=1.2 * a["qs"])
+    fine = dict(a, q=2.2 * a["q"], qs=2.2 * a["qs"])
+    spread = "\n".join(slit_dam.spread({"A-SD5": (a, []), "A-SD5 seed 2": (b2, [])}))
+    assert "11.00 ± 1.41 (10.00–12.00)" in spread, spread
+    ratio = "\n".join(slit_dam.size_effect({"A-SD5": (a, []), "A-SD5 seed 2": (b2, []),
+                                            "A-SD10": (fine, [])}))
+    assert "22.00 / 11.00 = 2.00 (1.83–2.20)" in ratio, ratio
     # Container: a front moving at 2.5 m/s, at 3.2 m at t = 1.28 s.
     run = os.path.join(d, "C_container2d")
     write(run, "front", ["time [s]", "x_front [m]"], [t, 2.5 * t])

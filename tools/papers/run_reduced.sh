@@ -35,6 +35,9 @@ list() {
     ;;
   slit) # section B, two-level DEM: Type A SD5 (the paper's 12,393 grains), Type B with SD5 fines
     echo "B_slitA_sd5 $P/slit_dam_dem/typeA.toml"
+    # two more packings of the same grains (the spread of the peak), and A-SD5(2): 10,697 grains
+    for k in 2 3; do echo "B_slitA_sd5_seed$k $P/slit_dam_dem/typeA.toml --set grains.0.seed=$k"; done
+    echo "B_slitA_sd5_n10697 $P/slit_dam_dem/typeA.toml --set grains.0.count=10697"
     for n in 4 16 32; do
       echo "B_slitB_sd5_${n}b $P/slit_dam_dem/typeB.toml --set grains.0.diameter=0.01 --set grains.0.count=12393 --set grains.1.count=$n"
     done
@@ -51,6 +54,9 @@ list() {
   check) # section A: trapping efficiency for s/d95 = 1.18, 1.36, 1.49 (reduced slice)
     for s in 0.093:1.18 0.107:1.36 0.118:1.49; do
       echo "A_check_s${s#*:} $P/slit_check_dam_reduced.toml --set structure.1.slit_width=${s%:*}"
+      for k in 2 3; do # further hopper seeds
+        echo "A_check_s${s#*:}_seed$k $P/slit_check_dam_reduced.toml --set structure.1.slit_width=${s%:*} --set feed.0.seed=$k"
+      done
     done
     ;;
   container) # section C: 2D slice at the paper's dp
