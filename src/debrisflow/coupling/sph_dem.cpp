@@ -97,42 +97,44 @@ void SphDemCoupling::interpolate() {
 #pragma omp parallel for schedule(static) reduction(max : max_rate) reduction(+ : fx, fy, fz)
                 for (Index i = 0; i < ng; ++i) {
                     const Vec3 xi = g.pos[i];
+                    // One pass gathers the kernel sums and, for the renormalised pressure
+                    // gradient (Bonet & Lok 1999), A = sum_j V_j p_j grad W_ij,
+                    // B = sum_j V_j grad W_ij and L = sum_j V_j (x_j - x_i) (x) grad W_ij;
+                    // then grad p = L^-1 (A - p_i B) = L^-1 sum_j V_j (p_j - p_i) grad W_ij with
+                    // p_i the Shepard pressure: exact for a linear (hydrostatic) field, where
+                    // the plain sum A errs by p_i B on a compressed lattice.
                     Real sf = 0, sb = 0, mass = 0, mu = 0, sp = 0;
-                    Vec3 mom{};
-                    fgrid.for_each_neighbor(-1, xi, pv.x, pv.y, pv.z, [&](Index j, Vec3, Real r2) {
-                        const Real w = kernel.w(std::sqrt(r2));
-                        const Real vj = pv.mass[j] / pv.rho[j];
-                        sp += vj * pv.p[j] * w;
-                        if (!pv.is_fluid(j)) {
-                            sb += vj * w;
-                            return;
-                        }
-                        sf += vj * w;
-                        mass += pv.mass[j] * w;
-                        mom += (vj * w) * pv.vel(j);
-                        if (has_mu) mu += vj * w * pv.mu[j];
-                    });
+                    Vec3 mom{}, ga{}, gb{};
+                    Real L[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+                    fgrid.for_each_neighbor(-1, xi, pv.x, pv.y, pv.z,
+                                            [&](Index j, Vec3 r, Real r2) {
+                                                const Real d = std::sqrt(r2);
+                                                const Real w = kernel.w(d);
+                                                const Real vj = pv.mass[j] / pv.rho[j];
+                                                // grad_i W(x_i - x_j) = r (dW/dr) / |r|
+                                                const Vec3 gw = (vj * kernel.grad_over_r(d)) * r;
+                                                ga += pv.p[j] * gw;
+                                                gb += gw;
+                                                for (int a = 0; a < 3; ++a)
+                                                    for (int b = 0; b < 3; ++b)
+                                                        L[a][b] -= gw[a] * r[b];
+                                                sp += vj * pv.p[j] * w;
+                                                if (!pv.is_fluid(j)) {
+                                                    sb += vj * w;
+                                                    return;
+                                                }
+                                                sf += vj * w;
+                                                mass += pv.mass[j] * w;
+                                                mom += (vj * w) * pv.vel(j);
+                                                if (has_mu) mu += vj * w * pv.mu[j];
+                                            });
                     if (sf < dry_share) {
                         lf[i] = {}, lu[i] = {}, lb[i] = 0;
                         continue;
                     }
                     share[i] = sf;
-                    // Renormalised pressure gradient (Bonet & Lok 1999): grad p = L^-1 sum_j
-                    // V_j (p_j - p_i) grad W_ij, L = sum_j V_j (x_j - x_i) (x) grad W_ij, p_i
-                    // the Shepard pressure; exact for a linear (hydrostatic) field, where the
-                    // plain sum errs by p_i sum_j V_j grad W_ij on a compressed lattice.
                     const Real p_i = sp / (sf + sb);
-                    Real L[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-                    Vec3 gsum{};
-                    fgrid.for_each_neighbor(
-                        -1, xi, pv.x, pv.y, pv.z, [&](Index j, Vec3 r, Real r2) {
-                            const Real vj = pv.mass[j] / pv.rho[j];
-                            // grad_i W(x_i - x_j) = r (dW/dr) / |r|
-                            const Vec3 gw = (vj * kernel.grad_over_r(std::sqrt(r2))) * r;
-                            gsum += (pv.p[j] - p_i) * gw;
-                            for (int a = 0; a < 3; ++a)
-                                for (int b = 0; b < 3; ++b) L[a][b] -= gw[a] * r[b];
-                        });
+                    const Vec3 gsum = ga - p_i * gb;
                     const Vec3 gradp = solve3(L, gsum);
                     Real solid = 0;
                     ggrid.for_each_neighbor(
