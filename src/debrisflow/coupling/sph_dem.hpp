@@ -39,7 +39,10 @@ public:
     // Remembers the step the fluid is about to take: the reaction is handed over in it.
     void predictor(Real dt) override { step_dt_ = dt; }
     void corrector(Real) override {}
-    void verlet_step(Real, bool) override {}
+    // Verlet scheme: the fluid has just taken its step with the reaction already in its
+    // accelerations; the next step's dt is not known yet, so the reaction is spread over this
+    // one's (exact while dt holds, as it does under a CFL limit that does not move much).
+    void verlet_step(Real dt, bool) override { step_dt_ = dt; }
     time::DtLimit stable_dt() const override;
     void check_health(Real) const override {}
     void add_timings(time::Timings& t) const override { t.forces += t_forces_; }
