@@ -48,6 +48,9 @@ def half_window_E(t, up, down, t0, t1):
     return out
 
 
+CURRENT_TAGS = ("lag", "compact")  # realizations of the current physics besides the seeds
+
+
 def report(root, figures):
     lines = ["### Slit check dam, trapping efficiency (section A)", ""]
     found = {r: analyse(os.path.join(root, f"A_check_s{r}")) for r in RATIOS}
@@ -88,6 +91,17 @@ def report(root, figures):
         if extra:
             ax[0].plot([r for r, _, _ in extra], [a["E"] for _, _, a in extra], "o",
                        mfc="none", color="C0", label="other realizations (earlier code, other seed, lagged SPS stress)")
+        # mean and sample standard deviation over the realizations of the current physics
+        # (main run, other hopper seeds, lagged SPS stress, compacted pair list)
+        current = {}
+        for r, tag, a in [(r, "", a) for r, a in found.items()] + extra:
+            if tag == "" or tag in CURRENT_TAGS or tag.startswith("seed"):
+                current.setdefault(r, []).append(a["E"])
+        ms = [r for r in sorted(current) if len(current[r]) > 1]
+        if ms:
+            ax[0].errorbar([r + 0.005 for r in ms], [np.mean(current[r]) for r in ms],
+                           yerr=[np.std(current[r], ddof=1) for r in ms], fmt="D", color="C1",
+                           capsize=4, label="mean ± s.d. of the current code's realizations")
         ax[0].plot([1.18], [E_EXP], "ks", label="experiment")
         ax[0].plot([1.18] * 3, E_PAPER_RUNS, "r^", label="paper SPH-DEM runs I–III")
         ax[0].set(xlabel="s / d95", ylabel="trapping efficiency E", ylim=(0, 1.05),
