@@ -9,9 +9,8 @@ using namespace debrisflow;
 
 namespace {
 
-// A fully periodic box of fluid at rest without gravity and three grains shot through it: no
-// wall takes momentum, so the grains' loss must all show up in the fluid.
-const char* periodic_box = R"(
+// A box without gravity, periodic in all three directions.
+const std::string box = R"(
 name = "sph_dem_momentum"
 dimensions = 3
 dp = 0.02
@@ -25,6 +24,9 @@ gravity = [0, 0, 0]
 min = [0, 0, 0]
 max = [0.2, 0.2, 0.2]
 periodic = ["x", "y", "z"]
+)";
+// Water filling it.
+const std::string water = R"(
 [sph]
 rho0 = 1000
 c0 = 5
@@ -35,6 +37,9 @@ name = "water"
 shape = "box"
 min = [0.0, 0.0, 0.0]
 max = [0.2, 0.2, 0.2]
+)";
+// Three sand grains shot through it, coupled to a fluid by the Di Felice drag.
+const std::string grains = R"(
 [[material]]
 name = "sand"
 density = 2650
@@ -68,6 +73,9 @@ velocity = [0.0, -0.3, 0.9]
 fluid_drag = "di_felice"
 reference_velocity = 1.0
 )";
+// A fully periodic box of fluid at rest without gravity and three grains shot through it: no
+// wall takes momentum, so the grains' loss must all show up in the fluid.
+const std::string periodic_box = box + water + grains;
 
 Vec3 fluid_momentum(particles::ParticleSet& s) {
     Vec3 p{};
@@ -118,33 +126,8 @@ TEST(SphDemCoupling, ExchangesMomentumWithTheVerletScheme) {
 
 // The coupling needs a fluid and 3D spheres; the reader says so with the key.
 TEST(SphDemCoupling, RejectsACaseWithoutFluid) {
-    const std::string toml = R"(
-name = "no_fluid"
-dimensions = 3
-[time]
-end = 0.1
-[domain]
-min = [0, 0, 0]
-max = [1, 1, 1]
-[[material]]
-name = "sand"
-density = 2650
-law = "hertz_mindlin"
-youngs_modulus = 1e7
-poisson = 0.3
-restitution = 0.5
-friction = 0.3
-[[grains]]
-name = "a"
-material = "sand"
-packing = "single"
-position = [0.5, 0.5, 0.5]
-diameter = 0.01
-[dem]
-fluid_drag = "di_felice"
-)";
     try {
-        test::case_from_toml("sph_dem_no_fluid", toml);
+        test::case_from_toml("sph_dem_no_fluid", box + grains);
         FAIL() << "accepted fluid_drag without a fluid";
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("fluid_drag"), std::string::npos) << e.what();
