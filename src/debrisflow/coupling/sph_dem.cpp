@@ -89,12 +89,12 @@ void SphDemCoupling::interpolate() {
     Vec3* lu = load_.u.data();
     Real* lb = load_.beta.data();
     Real* share = share_.data();
-    Real max_rate = 0, fx = 0, fy = 0, fz = 0;
+    Real max_rate = 0;
     const std::string law = drag_law_;
     std::visit(
         [&](const auto& kernel) {
             DragRegistry::visit_name(law, [&]<class Drag>() {
-#pragma omp parallel for schedule(static) reduction(max : max_rate) reduction(+ : fx, fy, fz)
+#pragma omp parallel for schedule(static) reduction(max : max_rate)
                 for (Index i = 0; i < ng; ++i) {
                     const Vec3 xi = g.pos[i];
                     // One pass gathers the kernel sums and, for the renormalised pressure
@@ -157,14 +157,11 @@ void SphDemCoupling::interpolate() {
                     lu[i] = u;
                     lb[i] = beta;
                     max_rate = std::max(max_rate, beta * g.inv_mass[i]);
-                    const Vec3 f = lf[i] + beta * (u - g.vel[i]);
-                    fx += f.x, fy += f.y, fz += f.z;
                 }
             });
         },
         fluid_.models().kernel);
     load_.max_rate = max_rate;
-    total_force_ = {fx, fy, fz};
 }
 
 void SphDemCoupling::apply_reaction() {

@@ -48,8 +48,6 @@ public:
     void add_timings(time::Timings& t) const override { t.forces += t_forces_; }
 
     const dem::FluidLoad& load() const { return load_; }
-    // Total fluid force on the grains at the last evaluation (held part + drag) [N].
-    Vec3 total_force() const { return total_force_; }
     const std::string& drag_law() const { return drag_law_; }
 
 private:
@@ -62,8 +60,7 @@ private:
     dem::FluidLoad load_;
     neighbors::CellGrid fluid_grid_, grain_grid_;
     std::vector<Real> share_; // S_f per grain (weights of the reaction)
-    Vec3 total_force_;
-    Real step_dt_ = 0; // the fluid step in progress [s]
+    Real step_dt_ = 0;        // the fluid step in progress [s]
     double t_forces_ = 0;
 };
 
