@@ -165,36 +165,38 @@ void SphDemCoupling::interpolate() {
 }
 
 void SphDemCoupling::apply_reaction() {
+    if (step_dt_ <= 0) return; // before the first step: nothing to hand over
     particles::ParticleSet& set = fluid_.particles();
     const particles::ParticleView pv = set.view();
     const dem::GrainView g = dem_.grains().view();
-    const neighbors::GridView fgrid = fluid_grid_.view();
-    if (step_dt_ <= 0) return; // before the first step: nothing to hand over
+    const neighbors::GridView ggrid = grain_grid_.view();
+    const Index ng = g.n;
+    // Grain i hands fluid particle j the force -F_i V_j W_ij / S_f (the weights sum to one),
+    // F_i = impulse / dt the mean fluid force on the grain; per unit fluid mass that is
+    // W_ij c_i / rho_j with c_i = -F_i / S_f.
+    reaction_.assign(std::size_t(ng), Vec3{});
     const Vec3* handover = load_.handover.data();
     const Real inv_dt = 1 / step_dt_;
-    const Real* share = share_.data();
-    const Index ng = g.n;
+    for (Index i = 0; i < ng; ++i)
+        if (share_[i] > 0) reaction_[i] = (-inv_dt / share_[i]) * handover[i];
+    const Vec3* c = reaction_.data();
+    const Real* gp = &g.pos[0].x;
+    // Gathered per fluid particle over the grains around it (the grain grid from
+    // interpolate()): no write conflicts, and the sums do not depend on the thread count.
     std::visit(
         [&](const auto& kernel) {
 #pragma omp parallel for schedule(static)
-            for (Index i = 0; i < ng; ++i) {
-                const Vec3 f = inv_dt * handover[i]; // mean fluid force on the grain
-                if (share[i] <= 0 || (f.x == 0 && f.y == 0 && f.z == 0)) continue;
-                // fluid particle j takes -F_i V_j W_ij / S_f (the weights sum to one)
-                const Vec3 per_share = (-1 / share[i]) * f;
-                fgrid.for_each_neighbor(-1, g.pos[i], pv.x, pv.y, pv.z,
-                                        [&](Index j, Vec3, Real r2) {
-                                            if (!pv.is_fluid(j)) return;
-                                            const Real w = kernel.w(std::sqrt(r2)) / pv.rho[j];
-                                            // a_j = f_j / m_j = -F_i W_ij / (rho_j S_f)
-                                            const Vec3 a = w * per_share;
-#pragma omp atomic
-                                            pv.ax[j] += a.x;
-#pragma omp atomic
-                                            pv.ay[j] += a.y;
-#pragma omp atomic
-                                            pv.az[j] += a.z;
-                                        });
+            for (Index j = 0; j < pv.n; ++j) {
+                if (!pv.is_fluid(j)) continue;
+                Vec3 a{};
+                ggrid.for_each_neighbor(
+                    -1, pv.pos(j), gp, gp + 1, gp + 2,
+                    [&](Index i, Vec3, Real r2) { a += kernel.w(std::sqrt(r2)) * c[i]; }, 3);
+                if (a.x == 0 && a.y == 0 && a.z == 0) continue;
+                const Real inv_rho = 1 / pv.rho[j];
+                pv.ax[j] += inv_rho * a.x;
+                pv.ay[j] += inv_rho * a.y;
+                pv.az[j] += inv_rho * a.z;
             }
         },
         fluid_.models().kernel);

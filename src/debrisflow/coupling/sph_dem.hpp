@@ -59,8 +59,9 @@ private:
     std::string drag_law_;
     dem::FluidLoad load_;
     neighbors::CellGrid fluid_grid_, grain_grid_;
-    std::vector<Real> share_; // S_f per grain (weights of the reaction)
-    Real step_dt_ = 0;        // the fluid step in progress [s]
+    std::vector<Real> share_;    // S_f per grain (weights of the reaction)
+    std::vector<Vec3> reaction_; // -F_i / S_f per grain: the reaction per unit weight
+    Real step_dt_ = 0;           // the fluid step in progress [s]
     double t_forces_ = 0;
 };
 
