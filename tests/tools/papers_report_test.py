@@ -11,6 +11,7 @@ import numpy as np
 
 root = sys.argv[1]
 sys.path.insert(0, os.path.join(root, "tools", "papers"))
+import baffles  # noqa: E402
 import check_dam  # noqa: E402
 import container  # noqa: E402
 import granular_flume  # noqa: E402
@@ -89,6 +90,18 @@ with tempfile.TemporaryDirectory() as d:
     c = check_dam.analyse(run)
     assert abs(c["E"] - 0.9) < 1e-12 and abs(c["up"] - 2) < 1e-12, c
     assert c["window"] == (3.0, 6.0), c
+    # Baffles: a slurry front at 2 m/s from x = 9 m and a boulder at 2.5 m/s from 8 m: the
+    # front leads by 0.25 m when it passes 12 m (t = 1.5 s); the boulder is 1 m ahead at 4 s.
+    tf = np.linspace(0, 4, 41)
+    fr = list(zip(tf, 9 + 2 * tf, 8 + 2.5 * tf))
+    tg, gap = baffles.lead_gap(fr, 12.0)
+    assert abs(tg - 1.5) < 1e-9 and abs(gap - 0.25) < 1e-9, (tg, gap)
+    tl, ahead = baffles.boulders_lead(fr)
+    assert abs(tl - 4.0) < 1e-9 and abs(ahead - 1.0) < 1e-9, (tl, ahead)
+    for name in ("B_baffles_nu0.1", "B_baffles_bed_nu5", "B_baffles_odd_nu1"):
+        os.makedirs(os.path.join(d, name))
+    found = baffles.runs(d)
+    assert sorted(found) == ["", "bed"] and list(found["bed"]) == [5.0], found
     # The whole report renders with what is there (and without the other runs).
     out = subprocess.run([sys.executable, os.path.join(root, "tools", "papers", "report.py"), d],
                          check=True, capture_output=True, text=True).stdout

@@ -1,6 +1,7 @@
 """Section B of ../shared/reference/seed_experiments.md, SPH-DEM: viscous slurry and five 1 m
 boulders against three staggered rows of baffles and a barrier, slurry viscosity 0.1, 1 and
-5 m^2/s. Runs are named B_baffles_nu<nu> (tools/papers/run_reduced.sh)."""
+5 m^2/s. Runs are named B_baffles_nu<nu> (boulders on the slurry's surface, the case) and
+B_baffles_<placement>_nu<nu> for the other starting places (tools/papers/run_reduced.sh)."""
 import glob
 import os
 import re
@@ -13,6 +14,11 @@ from vtk_series import frames, read_vtu
 REGIME = {0.1: "fluid front ahead of the boulders, jet-like run-up",
           1.0: "coherent bouldery front", 5.0: "boulders detach; pile-up and dead zone"}
 BOULDERS = 5
+# Where the boulders start (the run name's tag); the reference says only "placed upstream".
+PLACEMENTS = {"": "on the slurry's surface at its front (the case)",
+              "bed": "on the bed in the slurry's front part",
+              "up": "on the bed behind the slurry",
+              "ahead": "on the bed ahead of the slurry"}
 
 
 def fronts(run):
@@ -65,13 +71,32 @@ def lead_gap(fr, x):
     return float("nan"), float("nan")
 
 
+def boulders_lead(fr, after=1.0, before=20.5):
+    """(t, largest lead of the first boulder over the slurry front) from t = after on, while
+    the front is short of x = before (1 m before the barrier, which stops the front while
+    boulders may go over it):
+    positive when the boulders ran ahead of the slurry (detached), else the closest they came
+    to its front."""
+    rows = [(t, lead - front) for t, front, lead in fr if t >= after and front < before]
+    if not rows:
+        return float("nan"), float("nan")
+    return max(rows, key=lambda r: r[1])
+
+
+def runs(root):
+    """{placement tag: {nu: (run dir, analysis or None)}} for the runs found under root."""
+    out = {}
+    for run in sorted(glob.glob(os.path.join(root, "B_baffles_*nu*"))):
+        m = re.search(r"B_baffles_(?:([a-z]+)_)?nu([0-9.]+)$", run)
+        if m and os.path.isdir(run) and (m.group(1) or "") in PLACEMENTS:
+            out.setdefault(m.group(1) or "", {})[float(m.group(2))] = (run, analyse(run))
+    return out
+
+
 def report(root, figures):
     lines = ["### SPH-DEM bouldery flow against baffles (section B)", ""]
-    res = {}
-    for run in sorted(glob.glob(os.path.join(root, "B_baffles_nu*"))):
-        m = re.search(r"nu([0-9.]+)$", run)
-        if m and os.path.isdir(run):
-            res[float(m.group(1))] = (run, analyse(run))
+    found = runs(root)
+    res = found.get("", {})
     rows = []
     for nu, (run, a) in sorted(res.items()):
         if a is None:
@@ -95,6 +120,7 @@ def report(root, figures):
                     "barrier run-up [m]", "over the barrier [m³]", "boulders' final x [m]",
                     "paper's regime"], rows)
     lines.append("")
+    lines += placements(found)
     if figures and res:
         import matplotlib
         matplotlib.use("Agg")
@@ -115,6 +141,30 @@ def report(root, figures):
         lines += save_figure(fig, ax, figures, "baffles_loads.png", "baffle and barrier loads", 7)
         lines += regimes(res, figures)
     return lines
+
+
+def placements(found):
+    """Where the boulders start against what they do, per viscosity."""
+    rows = []
+    for tag, desc in PLACEMENTS.items():
+        for nu, (run, a) in sorted(found.get(tag, {}).items()):
+            if a is None:
+                continue
+            t12, gap12 = lead_gap(a["fronts"], 12.0)
+            tl, ahead = boulders_lead(a["fronts"])
+            rows.append([desc, nu, f"{gap12:+.1f} m", f"{ahead:+.1f} m at {tl:.1f} s",
+                         f"{a['baffle_bodies'].max():.0f} / {a['barrier_bodies'].max():.0f}",
+                         ", ".join(f"{x:.1f}" for x in sorted(a["boulders_x"])),
+                         f"{a['runup']:.2f}", f"{a['overtopped']:.1f}"])
+    if not rows:
+        return []
+    lines = ["Where the boulders start decides the regime. \"Boulders ahead\" is the largest lead "
+             "of the first boulder over the slurry front from 1 s on, until the front is 1 m from "
+             "the barrier (negative: the slurry led all the time, by at least that much):", ""]
+    lines += table(["boulders start", "ν [m²/s]", "front − boulder at x = 12 m",
+                    "boulders ahead", "boulders' peak on baffles / barrier [kN]",
+                    "boulders' final x [m]", "barrier run-up [m]", "over the barrier [m³]"], rows)
+    return lines + [""]
 
 
 def regimes(res, figures):

@@ -46,15 +46,24 @@ list() {
     # not in the default list (2.2 h on 2 threads with the settling: THREADS=2 JOBS=1)
     echo "B_slitA_sd10 $P/slit_dam_dem/typeA.toml --set grains.0.diameter=0.005 --set grains.0.count=93747 --set time.end=1.5 --set probe.2.window=[0.0,1.5]"
     ;;
-  baffles) # section B, SPH-DEM: slurry viscosity 0.1, 1, 5 m2/s
+  baffles) # section B, SPH-DEM: slurry viscosity 0.1, 1, 5 m2/s; boulders on the slurry's
+    # surface (the case), and on the bed in its front part, behind it and ahead of it
+    local -A at=([bed]="7.8 6.6 0.5" [up]="1.8 0.6 0.5" [ahead]="11.0 9.8 0.5")
     for nu in 0.1 1 5; do
       echo "B_baffles_nu$nu $P/baffles_boulders.toml --set sph.nu=$nu"
+      for v in bed up ahead; do
+        read -r x1 x2 z <<<"${at[$v]}"
+        local b="--set body.0.center=[$x1,1.0,$z] --set body.1.center=[$x1,3.0,$z]"
+        b="$b --set body.2.center=[$x1,5.0,$z] --set body.3.center=[$x2,2.0,$z]"
+        b="$b --set body.4.center=[$x2,4.0,$z]"
+        echo "B_baffles_${v}_nu$nu $P/baffles_boulders.toml --set sph.nu=$nu $b"
+      done
     done
     ;;
   check) # section A: trapping efficiency for s/d95 = 1.18, 1.36, 1.49 (reduced slice)
     for s in 0.093:1.18 0.107:1.36 0.118:1.49; do
       echo "A_check_s${s#*:} $P/slit_check_dam_reduced.toml --set structure.1.slit_width=${s%:*}"
-      for k in 2 3; do # further hopper seeds
+      for k in 2 3 4; do # further hopper seeds
         echo "A_check_s${s#*:}_seed$k $P/slit_check_dam_reduced.toml --set structure.1.slit_width=${s%:*} --set feed.0.seed=$k"
       done
     done
