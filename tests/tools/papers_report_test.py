@@ -13,6 +13,7 @@ root = sys.argv[1]
 sys.path.insert(0, os.path.join(root, "tools", "papers"))
 import baffles  # noqa: E402
 import check_dam  # noqa: E402
+import common  # noqa: E402
 import container  # noqa: E402
 import granular_flume  # noqa: E402
 import slit_dam  # noqa: E402
@@ -102,6 +103,11 @@ with tempfile.TemporaryDirectory() as d:
         os.makedirs(os.path.join(d, name))
     found = baffles.runs(d)
     assert sorted(found) == ["", "bed"] and list(found["bed"]) == [5.0], found
+    # Grain mass from the log line, in both of the engine's number formats.
+    run = os.path.join(d, "D_dam40")
+    os.makedirs(run)
+    open(os.path.join(run, "log.txt"), "w").write("dem: 2160 grains, 8.092e+04 kg, 3 walls\n")
+    assert common.grain_mass(run) == (2160, 80920.0), common.grain_mass(run)
     # The whole report renders with what is there (and without the other runs).
     out = subprocess.run([sys.executable, os.path.join(root, "tools", "papers", "report.py"), d],
                          check=True, capture_output=True, text=True).stdout

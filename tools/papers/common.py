@@ -67,7 +67,7 @@ def status(run):
 
 def grain_mass(run):
     """Total grain mass [kg] from the log line 'dem: N grains, M kg, ...'."""
-    m = re.search(r"dem: (\d+) grains, ([0-9.]+) kg", log_text(run))
+    m = re.search(r"dem: (\d+) grains, ([0-9.]+(?:e[+-]?[0-9]+)?) kg", log_text(run))
     return (int(m.group(1)), float(m.group(2))) if m else (0, float("nan"))
 
 

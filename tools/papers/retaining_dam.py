@@ -13,7 +13,7 @@ import glob
 import math
 import os
 
-from common import pct, read_probe, save_figure, table, wall_seconds
+from common import grain_mass, pct, read_probe, save_figure, table, wall_seconds
 
 PAPER = {  # slope: (crest peak mm, peak force kN, Kwan kN) from seed_experiments.md section D
     20: (None, 3032, 3618),
@@ -34,9 +34,9 @@ def slope_of(run):
     raise SystemExit(f"{run}: no slope_deg in case.toml")
 
 
-def bulk_density():
-    """Slurry (96 m^3 at 1000 kg/m^3) plus 300 rocks of 0.3 m at 2650 kg/m^3, over 96 m^3."""
-    return 1000.0 + 300 * 2650 * math.pi / 6 * 0.3 ** 3 / 96.0
+def bulk_density(run):
+    """Slurry (96 m^3 at 1000 kg/m^3) plus the run's rocks (mass from its log), over 96 m^3."""
+    return 1000.0 + grain_mass(run)[1] / 96.0
 
 
 def analyse(run):
@@ -57,7 +57,7 @@ def analyse(run):
     du = [u - base for u in ux]
     after = [i for i, ti in enumerate(tc) if arrive is not None and ti >= arrive] or [0]
     kc = max(after, key=lambda i: abs(du[i]))
-    rho = bulk_density()
+    rho = bulk_density(run)
     flux = [(rho * v * v * h, v, h, fr) for ti, v, h, fr in
             zip(appr["time [s]"], appr["v [m/s]"], appr["h [m]"], appr["Fr [-]"])
             if arrive is None or ti <= arrive + 0.2]
