@@ -2,6 +2,7 @@
 // prescribed motion, body-body contact, and case-file errors.
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/dem/box_faces.hpp"
+#include "debrisflow/flow/outlet.hpp"
 #include "rigid_rig.hpp"
 #include "run_case.hpp"
 #include <cmath>
@@ -205,6 +206,38 @@ TEST(RigidBodies, SphereCollisionConservesMomentumWithRestitution) {
     EXPECT_LT(norm(p1 - p0), 1e-12);
     const Real rel = rig.body(b).vel.x - rig.body(a).vel.x;
     EXPECT_NEAR(rel / 1.5, 0.5, 0.005); // linear law: exact restitution
+}
+
+// An outlet takes a free body whose centre is in its box: counted once by mass, parked at
+// rest, and gone from the contacts (the other sphere, which would have hit it head-on, flies
+// on through its place at its own speed).
+TEST(RigidBodies, BodyTakenByAnOutletStopsTouchingOthers) {
+    test::RigidRig rig;
+    rig.materials[0].kn = 1e5;
+    rig.materials[0].restitution = 0.5;
+    io::BodySpec s1 = test::RigidRig::sphere("s1", {0, 0, 0}, 0.05);
+    io::BodySpec s2 = test::RigidRig::sphere("s2", {0.2, 0, 0}, 0.04);
+    s1.velocity = {1, 0, 0};
+    s2.velocity = {-0.5, 0, 0};
+    const int a = rig.add(s1, 1000), b = rig.add(s2, 2000);
+    rig.start({0, 0, 0});
+    flow::Outlet outlet(io::OutletSpec{"sink", {0.1, -1, -1}, {0.5, 1, 1}}, 1000);
+    std::vector<std::uint8_t> none;
+    outlet.apply(nullptr, nullptr, rig.solver.get());
+    ASSERT_TRUE(rig.solver->removed(b));
+    EXPECT_FALSE(rig.solver->removed(a)); // its centre is outside the box
+    EXPECT_EQ(outlet.bodies_removed(), 1);
+    EXPECT_DOUBLE_EQ(outlet.body_mass(), rig.body(b).mass);
+    EXPECT_FALSE(rig.solver->remove_body(b, none)); // once only
+    const Vec3 parked = rig.body(b).pos;
+    for (int k = 0; k < 40000; ++k) rig.solver->step(1e-5); // s1 travels 0.4 m through s2's place
+    outlet.apply(nullptr, nullptr, rig.solver.get());       // s1 is in the box now: taken too
+    EXPECT_EQ(outlet.bodies_removed(), 2);
+    EXPECT_DOUBLE_EQ(outlet.body_mass(), rig.body(a).mass + rig.body(b).mass);
+    EXPECT_EQ(rig.body(b).pos.x, parked.x);
+    EXPECT_EQ(norm(rig.body(b).vel), 0);
+    EXPECT_NEAR(rig.body(a).pos.x, 0.4, 1e-9) << "s1 was stopped by the removed body";
+    EXPECT_EQ(rig.solver->contacts(), 0);
 }
 
 TEST(RigidBodies, CaseFileErrorsNameTheKey) {

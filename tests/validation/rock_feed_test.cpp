@@ -196,3 +196,85 @@ max = [0.27, 0.27, 0.18]
     EXPECT_LT(lowest, 0.1);
     EXPECT_GT(fluid_push, 0);
 }
+
+// An outlet takes the rocks that fall through it, with their SPH shells: a dry band between
+// the hopper and the pool (z 0.12-0.16 m). Every rock released early enough falls through it
+// and is removed there (parked at rest, no boundary particles left, its mass counted once);
+// none reaches the water, and no fluid is touched.
+TEST(RockFeed, RocksFallingThroughAnOutletLeaveWithTheirShells) {
+    app::Simulation sim(test::case_from_toml("rocks_outlet", fmt::format(R"(
+dimensions = 3
+dp = 0.01
+[time]
+end = 0.3
+[output]
+vtk = false
+[domain]
+min = [-0.05, -0.05, -0.05]
+max = [0.35, 0.35, 0.4]
+[sph]
+c0 = 15
+[rigid]
+contact_spacing = 0.01
+[[material]]
+name = "rock"
+law = "hertz_mindlin"
+density = 2650
+youngs_modulus = 5e6
+poisson = 0.3
+restitution = 0.3
+friction = 0.5
+[[feed]]
+name = "hopper"
+material = "rock"
+rocks = ["{0}rock_a.stl", "{0}rock_b.stl"]
+min = [0.03, 0.03, 0.19]
+max = [0.27, 0.27, 0.3]
+discharge = 1e-3
+size = {{distribution = "mono", diameter = 0.04}}
+[[fluid]]
+name = "pool"
+shape = "box"
+min = [0.03, 0.03, 0.0]
+max = [0.27, 0.27, 0.1]
+[[wall]]
+name = "tank"
+shape = "open_tank"
+min = [0.03, 0.03, 0.0]
+max = [0.27, 0.27, 0.18]
+[[outlet]]
+name = "band"
+min = [0.0, 0.0, 0.12]
+max = [0.3, 0.3, 0.16]
+every = 0.01
+)",
+                                                                         library)));
+    const auto fluid0 = sim.particles().count(particles::Kind::fluid);
+    sim.run({"", true, 0});
+    const auto& bodies = sim.bodies();
+    const auto& band = sim.probe("band").finals(); // ..., body_mass, bodies
+    double mass = 0;
+    long removed = 0;
+    for (std::size_t b = 0; b < bodies.bodies().size(); ++b) {
+        const auto& s = bodies.bodies()[b];
+        if (bodies.removed(int(b))) {
+            ++removed;
+            mass += s.mass;
+            EXPECT_EQ(bodies.particles_of(int(b)), 0u) << b;
+            EXPECT_EQ(norm(s.vel), 0) << b;
+            EXPECT_GE(s.pos.z, 0.12) << b;
+            EXPECT_LE(s.pos.z, 0.16) << b;
+        } else {
+            EXPECT_GT(bodies.particles_of(int(b)), 0u) << b;
+            EXPECT_GT(s.pos.z, 0.16) << b << ": a rock got past the band";
+        }
+    }
+    std::cout << fmt::format("{} of {} rocks taken by the outlet ({:.4g} kg)\n", removed,
+                             bodies.bodies().size(), mass);
+    // Released from 0.034 s at ~30 rocks/s, falling 0.05-0.14 m to the band: most by 0.3 s.
+    EXPECT_GE(removed, 3);
+    EXPECT_LT(removed, long(bodies.bodies().size())); // the last ones are still falling
+    EXPECT_EQ(long(band.at(band.size() - 1)), removed);
+    EXPECT_NEAR(band.at(band.size() - 2), mass, 1e-12 * mass);
+    EXPECT_EQ(sim.particles().count(particles::Kind::fluid), fluid0);
+}

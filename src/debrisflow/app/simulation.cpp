@@ -90,8 +90,8 @@ Simulation::Simulation(io::CaseSpec spec) : spec_(std::move(spec)) {
     }
     for (const auto& out : spec_.outlets) {
         outlets_.push_back(std::make_unique<flow::Outlet>(out, spec_.sph.rho0));
-        probes_.push_back(
-            std::make_unique<probes::OutletProbe>(*outlets_.back(), out.every, spec_.dim == 2));
+        probes_.push_back(std::make_unique<probes::OutletProbe>(
+            *outlets_.back(), out.every, spec_.dim == 2, spec_.has_bodies()));
     }
 }
 
@@ -311,7 +311,16 @@ io::RunReport Simulation::run(const RunOptions& opt) {
             for (auto& f : feeds_) f->apply(*dem_, s.t, s.dt);
             for (auto& f : rock_feeds_)
                 f->apply(*rigid_, dem_ ? &grains_ : nullptr, solver_ ? &set_ : nullptr, s.t, s.dt);
-            for (auto& out : outlets_) out->apply(solver_.get(), dem_.get());
+            for (auto& out : outlets_) {
+                const long before = out->bodies_removed();
+                out->apply(solver_.get(), dem_.get(), rigid_.get());
+                if (out->bodies_removed() > before)
+                    log_.line(fmt::format("t = {:.6g} s: {} rigid bod{} left through outlet '{}' "
+                                          "({} in all, {:.4g} kg)",
+                                          s.t, out->bodies_removed() - before,
+                                          out->bodies_removed() - before == 1 ? "y" : "ies",
+                                          out->name(), out->bodies_removed(), out->body_mass()));
+            }
         });
     for (auto& p : probes_) {
         probes::Probe* raw = p.get();
@@ -450,6 +459,7 @@ void Simulation::write_bodies(io::VtkSeries& vtk, Real t) const {
     const auto& models = rigid_->models();
     for (std::size_t b = 0; b < states.size(); ++b) {
         const auto& s = states[b];
+        if (s.motion == rigid::Motion::removed) continue; // left through an outlet
         auto add = [&](Vec3 local, Real radius) {
             const Vec3 p = s.to_world(local);
             x.push_back(p);

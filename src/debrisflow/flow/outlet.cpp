@@ -1,10 +1,11 @@
 #include "debrisflow/flow/outlet.hpp"
 #include "debrisflow/dem/dem_solver.hpp"
+#include "debrisflow/rigid/body_solver.hpp"
 #include "debrisflow/sph/sph_solver.hpp"
 
 namespace debrisflow::flow {
 
-void Outlet::apply(sph::SphSolver* fluid, dem::DemSolver* grains) {
+void Outlet::apply(sph::SphSolver* fluid, dem::DemSolver* grains, rigid::BodySolver* bodies) {
     if (fluid) {
         auto& s = fluid->particles();
         const Index n = s.size();
@@ -37,6 +38,18 @@ void Outlet::apply(sph::SphSolver* fluid, dem::DemSolver* grains) {
             ++grains_removed_;
         }
         if (any) grains->remove_grains(keep);
+    }
+    if (bodies) {
+        std::vector<std::uint8_t> keep; // the removed bodies' SPH boundary particles
+        for (std::size_t b = 0; b < bodies->bodies().size(); ++b) {
+            const rigid::BodyState& s = bodies->bodies()[b];
+            if (s.motion != rigid::Motion::free || !inside(s.pos.x, s.pos.y, s.pos.z)) continue;
+            const Real mass = s.mass;
+            if (!bodies->remove_body(int(b), keep)) continue;
+            body_mass_ += mass;
+            ++bodies_removed_;
+        }
+        if (!keep.empty() && fluid) fluid->remove_particles(keep);
     }
 }
 

@@ -8,18 +8,22 @@ namespace debrisflow::dem {
 class DemSolver;
 struct Material;
 } // namespace debrisflow::dem
+namespace debrisflow::rigid {
+class BodySolver;
+}
 
 namespace debrisflow::flow {
 
 // A sink: fluid particles and grains found inside the box are removed and counted by phase
-// (mass, and volume at the reference density / the grain's solid density). Rigid bodies are
-// not removed.
+// (mass, and volume at the reference density / the grain's solid density); a free rigid body
+// whose centre of mass is inside leaves the model too (BodySolver::remove_body: parked, inert,
+// its SPH boundary particles removed), counted by mass and number. Bodies held by a joint stay.
 class Outlet {
 public:
     Outlet(const io::OutletSpec& spec, Real rho0) : spec_(spec), rho0_(rho0) {}
 
-    // Removes what is inside now (either solver may be null).
-    void apply(sph::SphSolver* fluid, dem::DemSolver* grains);
+    // Removes what is inside now (any solver may be null).
+    void apply(sph::SphSolver* fluid, dem::DemSolver* grains, rigid::BodySolver* bodies);
 
     const std::string& name() const { return spec_.name; }
     Real fluid_mass() const { return fluid_mass_; }     // [kg] (2D: kg/m)
@@ -27,6 +31,8 @@ public:
     Real grain_mass() const { return grain_mass_; }
     Real grain_volume() const { return grain_volume_; }
     long grains_removed() const { return grains_removed_; }
+    Real body_mass() const { return body_mass_; } // [kg] (2D: kg/m)
+    long bodies_removed() const { return bodies_removed_; }
 
 private:
     bool inside(Real x, Real y, Real z) const {
@@ -35,8 +41,8 @@ private:
     }
     io::OutletSpec spec_;
     Real rho0_;
-    Real fluid_mass_ = 0, fluid_volume_ = 0, grain_mass_ = 0, grain_volume_ = 0;
-    long grains_removed_ = 0;
+    Real fluid_mass_ = 0, fluid_volume_ = 0, grain_mass_ = 0, grain_volume_ = 0, body_mass_ = 0;
+    long grains_removed_ = 0, bodies_removed_ = 0;
 };
 
 } // namespace debrisflow::flow

@@ -139,7 +139,7 @@ std::vector<Real> DepositProbe::sample(Real, const ProbeContext& ctx) {
     }
     if (ctx.rigid)
         for (std::size_t k = 0; k < ctx.rigid->bodies().size(); ++k)
-            if (in_box(ctx.rigid->bodies()[k].pos, lo_, hi_)) {
+            if (!ctx.rigid->removed(int(k)) && in_box(ctx.rigid->bodies()[k].pos, lo_, hi_)) {
                 ms += ctx.rigid->bodies()[k].mass;
                 vs += ctx.rigid->models()[k].volume;
             }

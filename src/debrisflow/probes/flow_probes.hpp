@@ -30,33 +30,39 @@ private:
 class OutletProbe : public Probe {
 public:
     // per_metre: a 2D case; fluid columns are per metre of width, grains (discs of the case's
-    // thickness) stay in kg.
-    OutletProbe(const flow::Outlet& outlet, Real every, bool per_metre)
-        : Probe(outlet.name(), every), outlet_(outlet), unit_(per_metre ? "/m" : "") {}
+    // thickness) stay in kg. bodies: the case has rigid bodies (body mass and count columns).
+    OutletProbe(const flow::Outlet& outlet, Real every, bool per_metre, bool bodies)
+        : Probe(outlet.name(), every), outlet_(outlet), unit_(per_metre ? "/m" : ""),
+          bodies_(bodies) {}
     std::vector<std::string> columns() const override {
-        return {"fluid_mass [kg" + unit_ + "]",
-                "fluid_volume [m3" + unit_ + "]",
-                "grain_mass [kg]",
-                "grain_volume [m3]",
-                "fluid_rate [kg/s" + unit_ + "]",
-                "grain_rate [kg/s]"};
+        std::vector<std::string> c{"fluid_mass [kg" + unit_ + "]",
+                                   "fluid_volume [m3" + unit_ + "]",
+                                   "grain_mass [kg]",
+                                   "grain_volume [m3]",
+                                   "fluid_rate [kg/s" + unit_ + "]",
+                                   "grain_rate [kg/s]"};
+        if (bodies_) c.insert(c.end(), {"body_mass [kg" + unit_ + "]", "bodies [-]"});
+        return c;
     }
     std::vector<Real> sample(Real t, const ProbeContext&) override {
         const Real dt = t - t_last_;
         const Real qf = dt > 0 ? (outlet_.fluid_mass() - fluid_last_) / dt : 0;
         const Real qg = dt > 0 ? (outlet_.grain_mass() - grain_last_) / dt : 0;
         t_last_ = t, fluid_last_ = outlet_.fluid_mass(), grain_last_ = outlet_.grain_mass();
-        return {outlet_.fluid_mass(),
-                outlet_.fluid_volume(),
-                outlet_.grain_mass(),
-                outlet_.grain_volume(),
-                qf,
-                qg};
+        std::vector<Real> v{outlet_.fluid_mass(),
+                            outlet_.fluid_volume(),
+                            outlet_.grain_mass(),
+                            outlet_.grain_volume(),
+                            qf,
+                            qg};
+        if (bodies_) v.insert(v.end(), {outlet_.body_mass(), Real(outlet_.bodies_removed())});
+        return v;
     }
 
 private:
     const flow::Outlet& outlet_;
     std::string unit_;
+    bool bodies_;
     Real t_last_ = 0, fluid_last_ = 0, grain_last_ = 0;
 };
 

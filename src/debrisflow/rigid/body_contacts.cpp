@@ -268,9 +268,14 @@ Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<Bo
         std::vector<Sample> pts;
         pts.reserve(total);
         std::uint32_t id = 0;
-        for (std::size_t bi = 0; bi < s.size(); ++bi)
+        for (std::size_t bi = 0; bi < s.size(); ++bi) {
+            if (s[bi].motion == Motion::removed) { // gone; ids stay those of the samples
+                id += std::uint32_t(m[bi].samples.size());
+                continue;
+            }
             for (const auto& sp : m[bi].samples)
                 pts.push_back({s[bi].to_world(sp.center), sp.radius, int(bi), id++});
+        }
         auto cell_of = [&](Vec3 x) {
             return std::tuple<long, long, long>{long(std::floor(x.x / cell)),
                                                 long(std::floor(x.y / cell)),
@@ -283,7 +288,7 @@ Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<Bo
         };
         std::unordered_multimap<std::uint64_t, std::uint32_t> grid;
         grid.reserve(pts.size());
-        for (const auto& p : pts) grid.emplace(hash(cell_of(p.x)), p.id);
+        for (std::uint32_t k = 0; k < pts.size(); ++k) grid.emplace(hash(cell_of(pts[k].x)), k);
         for (const auto& a : pts) {
             const auto [cx, cy, cz] = cell_of(a.x);
             for (long dz = -1; dz <= 1; ++dz)

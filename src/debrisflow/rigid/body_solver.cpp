@@ -43,6 +43,7 @@ void BodySolver::update_obstacles() {
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
         const BodyState& s = bodies_[b];
         o.body_com[b] = s.pos;
+        if (s.motion == Motion::removed) continue;
         const Real m = s.motion == Motion::free ? s.mass : Real(1e20);
         const Vec3 w = s.omega();
         for (const auto& sp : models_[b].samples) {
@@ -70,6 +71,32 @@ void BodySolver::refresh_members() {
         members_.push_back(i);
         rows_.push_back(std::uint32_t(r));
     }
+}
+
+bool BodySolver::remove_body(int b, std::vector<std::uint8_t>& keep) {
+    BodyState& s = bodies_[std::size_t(b)];
+    if (s.motion != Motion::free || joints_.involves(b)) return false;
+    s.motion = Motion::removed;
+    s.vel = s.ang_mom = s.prescribed_omega = {};
+    s.inv_mass = 0;
+    if (set_) {
+        refresh_members();
+        keep.resize(std::size_t(set_->size()), 1);
+        for (std::size_t k = 0; k < members_.size(); ++k)
+            if (particles_.owner[rows_[k]] == b) keep[std::size_t(members_[k])] = 0;
+    }
+    update_obstacles();
+    return true;
+}
+
+std::size_t BodySolver::particles_of(int b) const {
+    std::size_t n = 0;
+    if (set_)
+        for (Index i = 0; i < set_->size(); ++i) {
+            const long r = particles_.row(set_->id[i], initial_rows_);
+            n += r >= 0 && particles_.owner[std::size_t(r)] == b;
+        }
+    return n;
 }
 
 int BodySolver::add_body(BodyState state, BodyModel model, const std::vector<ShellPoint>& shell,
@@ -207,7 +234,7 @@ void BodySolver::move_prescribed(BodyState& s, const BodyModel& m, Real h, Real 
 void BodySolver::drift(Real h, Real t_mid) {
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
         BodyState& s = bodies_[b];
-        if (s.motion == Motion::fixed) continue;
+        if (s.motion == Motion::fixed || s.motion == Motion::removed) continue;
         if (s.motion == Motion::prescribed) {
             move_prescribed(s, models_[b], h, t_mid);
             continue;
@@ -245,7 +272,7 @@ void BodySolver::corrector(Real dt) {
     bodies_ = saved_;
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
         BodyState& s = bodies_[b];
-        if (s.motion == Motion::fixed) continue;
+        if (s.motion == Motion::fixed || s.motion == Motion::removed) continue;
         if (s.motion == Motion::prescribed) { // moves with its mid-step velocity
             move_prescribed(s, models_[b], dt, t_ + Real(0.5) * dt);
             continue;
@@ -303,6 +330,7 @@ void BodySolver::check_health(Real t) const {
     const auto& d = params_.domain;
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
         const BodyState& s = bodies_[b];
+        if (s.motion == Motion::removed) continue;
         const Real vals[] = {s.pos.x, s.pos.y,     s.pos.z,     s.vel.x,     s.vel.y,
                              s.vel.z, s.ang_mom.x, s.ang_mom.y, s.ang_mom.z, s.q.w};
         bool finite = true;
@@ -319,8 +347,8 @@ void BodySolver::check_health(Real t) const {
         if (finite && inside && wrapped >= 0)
             throw InstabilityError(fmt::format(
                 "at t = {:.6g} s: body '{}' crossed the periodic boundary in {} (at {:.4g} m); "
-                "rigid bodies do not wrap through periodic directions yet, and outlets do not "
-                "remove them: keep them inside with walls (a catch basin)",
+                "rigid bodies do not wrap through periodic directions yet: keep them inside "
+                "with walls, or remove them with an outlet before the boundary",
                 t, models_[b].name, "xyz"[wrapped], s.pos[wrapped]));
         if (finite && inside) continue;
         throw InstabilityError(fmt::format(

@@ -79,6 +79,16 @@ public:
     int add_body(BodyState state, BodyModel model, const std::vector<ShellPoint>& shell, Real rho,
                  Real m_particle);
 
+    // Removes free, unjointed body b from the model (an outlet took it): it is parked at rest
+    // where it is (Motion::removed) and leaves the contacts, the grains' obstacles, the health
+    // check and the output. Returns false (nothing done) for any other body. Its SPH boundary
+    // particles are marked 0 in `keep` (sized to the attached particle set, when there is one),
+    // for the caller to remove with SphSolver::remove_particles.
+    bool remove_body(int b, std::vector<std::uint8_t>& keep);
+    bool removed(int b) const { return bodies_[std::size_t(b)].motion == Motion::removed; }
+    // Number of SPH boundary particles of body b in the attached set (0 without one).
+    std::size_t particles_of(int b) const;
+
     // A velocity-Verlet step on the bodies alone (tests, body-only runs).
     void step(Real dt);
 

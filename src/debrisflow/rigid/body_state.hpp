@@ -6,7 +6,9 @@
 
 namespace debrisflow::rigid {
 
-enum class Motion : std::uint8_t { free = 0, fixed = 1, prescribed = 2 };
+// removed: the body left the model through an outlet; it is parked where it left, at rest,
+// and no longer moves, touches anything or carries fluid particles.
+enum class Motion : std::uint8_t { free = 0, fixed = 1, prescribed = 2, removed = 3 };
 
 // State of one rigid body. The body frame is the principal frame at the centre of mass:
 // inertia diag(1 / inv_inertia). Angular momentum is kept in the world frame (conserved
@@ -17,7 +19,7 @@ struct BodyState {
     Vec3 vel;          // [m/s]
     Vec3 ang_mom;      // world angular momentum [kg m^2/s]
     Real mass = 0;     // [kg] (2D: per metre of thickness)
-    Real inv_mass = 0; // 0 for fixed and prescribed bodies
+    Real inv_mass = 0; // 0 for fixed, prescribed and removed bodies
     Vec3 inv_inertia;  // 1 / principal moments [1/(kg m^2)]
     Quat q_user;       // principal frame in the user's (input) frame: user -> world = q * q_user*
     Motion motion = Motion::free;

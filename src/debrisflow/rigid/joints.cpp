@@ -5,6 +5,12 @@
 
 namespace debrisflow::rigid {
 
+bool JointSet::involves(int body) const {
+    for (const auto& j : joints_)
+        if (j.a == body || j.b == body) return true;
+    return false;
+}
+
 namespace {
 
 using Mat3 = Eigen::Matrix3d;

@@ -30,6 +30,7 @@ public:
     std::vector<Joint>& joints() { return joints_; }
     const std::vector<Joint>& joints() const { return joints_; }
     bool empty() const { return joints_.empty(); }
+    bool involves(int body) const; // body is one end of a joint
 
     // Adds spring-damper forces and torques to the bodies' joint loads.
     void add_spring_loads(const std::vector<BodyState>& s, std::vector<BodyLoads>& loads) const;
