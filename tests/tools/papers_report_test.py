@@ -91,6 +91,14 @@ with tempfile.TemporaryDirectory() as d:
     c = check_dam.analyse(run)
     assert abs(c["E"] - 0.9) < 1e-12 and abs(c["up"] - 2) < 1e-12, c
     assert c["window"] == (3.0, 6.0), c
+    # Recorded realizations fill in for run folders not on disk; a folder replaces its record:
+    # at 1.18 the run above (0.9) and a recorded seed 2 (0.7) give 0.8 +- 0.1414; the record
+    # of the main run (0.1) is not used, and the stopped one (to 4.5 s) is not averaged.
+    recs = [(1.18, "", 0.1, None, None, 6.0), (1.18, "seed2", 0.7, 1.0, 0.3, 6.0),
+            (1.18, "seed3", 0.5, None, None, 4.5)]
+    text = "\n".join(check_dam.report(d, None, recs))
+    assert "1.18: 0.800 ± 0.141 (2 runs)" in text, text
+    assert "| 1.18 (seed2) | 0.700 | 1.00 / 0.30 | 3–6 |" in text, text
     # Baffles: a slurry front at 2 m/s from x = 9 m and a boulder at 2.5 m/s from 8 m: the
     # front leads by 0.25 m when it passes 12 m (t = 1.5 s); the boulder is 1 m ahead at 4 s.
     tf = np.linspace(0, 4, 41)

@@ -48,7 +48,33 @@ def half_window_E(t, up, down, t0, t1):
     return out
 
 
-CURRENT_TAGS = ("lag", "compact")  # realizations of the current physics besides the seeds
+CURRENT_TAGS = ("lag", "compact", "outlet")  # current physics besides the seeds
+
+# Realizations whose run folders are not kept (runs/ is not versioned; a fresh machine has
+# none): E, the masses M_up / M_down [kg] where noted and the time the run reached, as their
+# probes/trapping.csv gave them (docs/validation.md, section 4). A run found on disk under the
+# same name replaces its record. Tags: "" the main run, seedN another hopper seed, lag / compact
+# the lagged SPS stress / compacted pair list, side the earlier vertex-side contact rule.
+RECORDED = [
+    (1.18, "", 0.935, 4.21, 0.28, 6.0), (1.36, "", 0.766, 5.26, 1.23, 6.0),
+    (1.49, "", 0.706, 5.35, 1.57, 6.0),
+    (1.18, "seed2", 0.992, None, None, 6.0), (1.36, "seed2", 0.822, None, None, 6.0),
+    (1.49, "seed2", 0.520, None, None, 6.0),
+    (1.18, "lag", 0.932, 4.74, 0.32, 6.0), (1.36, "lag", 0.701, 5.51, 1.65, 6.0),
+    (1.18, "compact", 0.939, 5.30, 0.32, 6.0),
+    (1.18, "seed3", 0.595, 5.04, 2.04, 6.0), (1.36, "seed3", 0.899, None, 0.58, 6.0),
+    (1.49, "seed3", 0.994, None, 0.04, 6.0),
+    (1.36, "seed4", 0.697, None, None, 4.27), (1.49, "seed4", 0.752, None, 1.25, 6.0),
+    (1.18, "side", 0.933, None, None, 6.0), (1.36, "side", 0.994, None, None, 6.0),
+]
+
+
+def recorded(entry):
+    """A RECORDED entry as analyse() would give it (no time series)."""
+    r, tag, e, up, down, t_end = entry
+    nan = float("nan")
+    return (r, tag, dict(E=e, up=nan if up is None else up, down=nan if down is None else down,
+                         window=(3.0, 6.0), t_end=t_end, halves=[nan, nan], recorded=True))
 
 
 def current_realizations(found, extra):
@@ -63,7 +89,7 @@ def current_realizations(found, extra):
     return current
 
 
-def report(root, figures):
+def report(root, figures, records=RECORDED):
     lines = ["### Slit check dam, trapping efficiency (section A)", ""]
     found = {r: analyse(os.path.join(root, f"A_check_s{r}")) for r in RATIOS}
     found = {r: a for r, a in found.items() if a is not None}
@@ -76,6 +102,14 @@ def report(root, figures):
             a = analyse(os.path.join(root, name))
             if a is not None:
                 extra.append((float(m.group(1)), m.group(2), a))
+    on_disk = {(r, "") for r in found} | {(r, tag) for r, tag, _ in extra}
+    for r, tag, a in map(recorded, records):
+        if (r, tag) in on_disk:
+            continue
+        if tag == "":
+            found[r] = a
+        else:
+            extra.append((r, tag, a))
     if not found:
         return lines + ["A_check_s*: not run (`tools/papers/run_reduced.sh check`)", ""]
     rows = []
@@ -86,9 +120,12 @@ def report(root, figures):
             "below the 1.18 value"
         diff = f"{100 * (a['E'] / E_EXP - 1):+.0f} % vs exp." if r == 1.18 else ""
         w0, w1 = a["window"]
-        rows.append([f"{r}" + (f" ({tag})" if tag else ""), f"{a['E']:.3f}", f"{a['up']:.2f} / {a['down']:.2f}",
+        mass = lambda x: "–" if np.isnan(x) else f"{x:.2f}"
+        rows.append([f"{r}" + (f" ({tag})" if tag else ""), f"{a['E']:.3f}",
+                     f"{mass(a['up'])} / {mass(a['down'])}",
                      f"{w0:g}–{round(min(w1, a['t_end']), 2):g}",
-                     " / ".join(f"{e:.2f}" for e in a["halves"]), paper, diff,
+                     " / ".join(mass(e) for e in a["halves"]), paper, diff,
+                     "recorded" if a.get("recorded") else
                      f"{wall_seconds(run) / 60:.0f} min, {status(run)}"])
     lines += table(["s/d95", "E", "M_up / M_down [kg]", "window [s]",
                     "E, first / second half", "paper", "diff.", "run"], rows)
@@ -108,7 +145,7 @@ def report(root, figures):
         ax[0].plot(rs, [found[r]["E"] for r in rs], "o-", label="debrisflow, reduced slice")
         if extra:
             ax[0].plot([r for r, _, _ in extra], [a["E"] for _, _, a in extra], "o",
-                       mfc="none", color="C0", label="other realizations (earlier code, other seed, lagged SPS stress)")
+                       mfc="none", color="C0", label="other realizations (other seeds, earlier code)")
         ms = [r for r in sorted(current) if len(current[r]) > 1]
         if ms:
             ax[0].errorbar([r + 0.005 for r in ms], [np.mean(current[r]) for r in ms],
@@ -120,6 +157,8 @@ def report(root, figures):
                   title="E vs relative slit width (P1)")
         for r in rs:
             a = found[r]
+            if a.get("recorded"):
+                continue
             inside = a["t"] >= a["window"][0]
             ax[1].plot(a["t"][inside], a["E_t"][inside], label=f"s/d95 = {r}")
         ax[1].set(xlabel="t [s]", ylabel="E over the window so far", ylim=(0, 1.05),
