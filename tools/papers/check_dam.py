@@ -155,12 +155,12 @@ def report(root, figures, records=RECORDED):
         ax[0].plot([1.18] * 3, E_PAPER_RUNS, "r^", label="paper SPH-DEM runs I–III")
         ax[0].set(xlabel="s / d95", ylabel="trapping efficiency E", ylim=(0, 1.05),
                   title="E vs relative slit width (P1)")
-        for r in rs:
-            a = found[r]
-            if a.get("recorded"):
+        for r, tag, a in sorted(runs, key=lambda e: (e[0], e[1])):
+            if a.get("recorded"):  # no time series kept
                 continue
             inside = a["t"] >= a["window"][0]
-            ax[1].plot(a["t"][inside], a["E_t"][inside], label=f"s/d95 = {r}")
+            ax[1].plot(a["t"][inside], a["E_t"][inside], color=f"C{RATIOS.index(r)}",
+                       lw=1, label=f"s/d95 = {r}" + (f" ({tag})" if tag else ""))
         ax[1].set(xlabel="t [s]", ylabel="E over the window so far", ylim=(0, 1.05),
                   title="running trapping efficiency")
         lines += save_figure(fig, ax, figures, "check_dam_trapping.png", "check dam trapping")

@@ -63,7 +63,7 @@ list() {
   check) # section A: trapping efficiency for s/d95 = 1.18, 1.36, 1.49 (reduced slice)
     for s in 0.093:1.18 0.107:1.36 0.118:1.49; do
       echo "A_check_s${s#*:} $P/slit_check_dam_reduced.toml --set structure.1.slit_width=${s%:*}"
-      for k in 2 3 4 5; do # further hopper seeds
+      for k in 2 3 4 5 6 7; do # further hopper seeds
         echo "A_check_s${s#*:}_seed$k $P/slit_check_dam_reduced.toml --set structure.1.slit_width=${s%:*} --set feed.0.seed=$k"
       done
     done
