@@ -97,7 +97,7 @@ with tempfile.TemporaryDirectory() as d:
     recs = [(1.18, "", 0.1, None, None, 6.0), (1.18, "seed2", 0.7, 1.0, 0.3, 6.0),
             (1.18, "seed3", 0.5, None, None, 4.5)]
     text = "\n".join(check_dam.report(d, None, recs))
-    assert "1.18: 0.800 ± 0.141 (2 runs)" in text, text
+    assert "1.18: 0.800 ± 0.141 (s.e. 0.100, 2 runs)" in text, text
     assert "| 1.18 (seed2) | 0.700 | 1.00 / 0.30 | 3–6 |" in text, text
     # Baffles: a slurry front at 2 m/s from x = 9 m and a boulder at 2.5 m/s from 8 m: the
     # front leads by 0.25 m when it passes 12 m (t = 1.5 s); the boulder is 1 m ahead at 4 s.

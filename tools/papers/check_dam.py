@@ -138,11 +138,18 @@ def report(root, figures, records=RECORDED):
                     "E, first / second half", "paper", "diff.", "run"], rows)
     lines.append("")
     current = current_realizations(found, extra)
-    stats = [f"{r}: {np.mean(e):.3f} ± {np.std(e, ddof=1):.3f} ({len(e)} runs)"
+    sem = lambda e: np.std(e, ddof=1) / np.sqrt(len(e))
+    stats = [f"{r}: {np.mean(e):.3f} ± {np.std(e, ddof=1):.3f} (s.e. {sem(e):.3f}, {len(e)} runs)"
              for r, e in sorted(current.items()) if len(e) > 1]
     if stats:
         lines += ["Mean ± s.d. over the current code's realizations that counted their whole "
                   "window: " + "; ".join(stats) + ".", ""]
+    # Is E lower at the widest slit? Welch's t of the difference of the means.
+    lo, hi = RATIOS[0], RATIOS[-1]
+    if len(current.get(lo, [])) > 1 and len(current.get(hi, [])) > 1:
+        d = np.mean(current[lo]) - np.mean(current[hi])
+        se = np.hypot(sem(current[lo]), sem(current[hi]))
+        lines += [f"E({lo}) − E({hi}) = {d:.3f} ± {se:.3f} (Welch t = {d / se:.2f}).", ""]
     if figures:
         import matplotlib
         matplotlib.use("Agg")
