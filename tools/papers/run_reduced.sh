@@ -5,7 +5,7 @@
 # report with
 #   /usr/bin/python3 tools/papers/report.py runs/papers --figures docs/img
 # Exits non-zero when a run fails (its output so far is kept). Also `ctest -L paper`.
-# Usage: tools/papers/run_reduced.sh [flume|slit|slit10|baffles|check|container|dam ...]
+# Usage: tools/papers/run_reduced.sh [flume|slit|slit10|baffles|check|check15|container|dam ...]
 # (default: all of them; the slit check dam of section A takes 19-25 min per 6 s run on 2 threads)
 set -u
 cd "$(dirname "$0")/../.."
@@ -66,6 +66,12 @@ list() {
       for k in 2 3 4 5 6 7; do # further hopper seeds
         echo "A_check_s${s#*:}_seed$k $P/slit_check_dam_reduced.toml --set structure.1.slit_width=${s%:*} --set feed.0.seed=$k"
       done
+    done
+    ;;
+  check15) # section A over the paper's 15 s counting window (3-18 s): ~1 h per run on one
+    # thread; not in the default list
+    for s in 0.093:1.18 0.107:1.36 0.118:1.49; do
+      echo "A_check_s${s#*:}_w15 $P/slit_check_dam_reduced.toml --set structure.1.slit_width=${s%:*} --set time.end=18 --set probe.1.window=[3.0,18.0]"
     done
     ;;
   container) # section C: 2D slice at the paper's dp
