@@ -95,9 +95,10 @@ with tempfile.TemporaryDirectory() as d:
     # at 1.18 the run above (0.9) and a recorded seed 2 (0.7) give 0.8 +- 0.1414; the record
     # of the main run (0.1) is not used, and the stopped one (to 4.5 s) is not averaged.
     recs = [(1.18, "", 0.1, None, None, 6.0), (1.18, "seed2", 0.7, 1.0, 0.3, 6.0),
-            (1.18, "seed3", 0.5, None, None, 4.5)]
+            (1.18, "seed3", 0.5, None, None, 4.5), (1.18, "w15", 0.85, 20.0, 3.0, 18.0)]
     text = "\n".join(check_dam.report(d, None, recs))
-    assert "1.18: 0.800 ± 0.141 (s.e. 0.100, 2 runs)" in text, text
+    assert "1.18: 0.800 ± 0.141 (s.e. 0.100, 2 runs)" in text, text  # w15 kept apart
+    assert "15 s window: 1.18 (w15): E = 0.850 over 3–18 s" in text, text
     assert "| 1.18 (seed2) | 0.700 | 1.00 / 0.30 | 3–6 |" in text, text
     # Baffles: a slurry front at 2 m/s from x = 9 m and a boulder at 2.5 m/s from 8 m: the
     # front leads by 0.25 m when it passes 12 m (t = 1.5 s); the boulder is 1 m ahead at 4 s.

@@ -88,7 +88,8 @@ def recorded(entry):
     r, tag, e, up, down, t_end = entry
     nan = float("nan")
     return (r, tag, dict(E=e, up=nan if up is None else up, down=nan if down is None else down,
-                         window=(3.0, 6.0), t_end=t_end, halves=[nan, nan], recorded=True))
+                         window=(3.0, 18.0) if is_long(tag) else (3.0, 6.0), t_end=t_end,
+                         halves=[nan, nan], recorded=True))
 
 
 def current_realizations(found, extra):
