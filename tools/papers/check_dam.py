@@ -161,7 +161,8 @@ def report(root, figures, records=RECORDED):
         d = np.mean(current[lo]) - np.mean(current[hi])
         se = np.hypot(sem(current[lo]), sem(current[hi]))
         lines += [f"E({lo}) − E({hi}) = {d:.3f} ± {se:.3f} (Welch t = {d / se:.2f}).", ""]
-    long = [(r, tag, a) for r, tag, a in sorted(extra, key=lambda e: (e[0], e[1])) if is_long(tag) and a["t_end"] > a["window"][0]]
+    long = [(r, tag, a) for r, tag, a in sorted(extra, key=lambda e: (e[0], e[1]))
+            if is_long(tag) and a["t_end"] > a["window"][0]]
     if long:
         lines += ["Over the paper's 15 s window: " + "; ".join(
             f"{r} ({tag}): E = {a['E']:.3f} over {a['window'][0]:g}–"
