@@ -6,7 +6,8 @@
 #   /usr/bin/python3 tools/papers/report.py runs/papers --figures docs/img
 # Exits non-zero when a run fails (its output so far is kept). Also `ctest -L paper`.
 # Usage: tools/papers/run_reduced.sh [flume|slit|slit10|baffles|check|check15|container|dam ...]
-# (default: all of them; the slit check dam of section A takes 19-25 min per 6 s run on 2 threads)
+# (default: all but slit10 and check15; the slit check dam of section A takes 13-20 min per 6 s run
+# on one thread)
 set -u
 cd "$(dirname "$0")/../.."
 OUT=${OUT:-runs/papers}
@@ -68,8 +69,8 @@ list() {
       done
     done
     ;;
-  check15) # section A over the paper's 15 s counting window (3-18 s): ~1 h per run on one
-    # thread; not in the default list
+  check15) # section A over the paper's 15 s counting window (3-18 s): ~1.3 h of one core per run;
+    # not in the default list
     for s in 0.093:1.18 0.107:1.36 0.118:1.49; do
       echo "A_check_s${s#*:}_w15 $P/slit_check_dam_reduced.toml --set structure.1.slit_width=${s%:*} --set time.end=18 --set probe.1.window=[3.0,18.0]"
     done
