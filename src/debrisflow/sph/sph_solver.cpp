@@ -4,6 +4,7 @@
 #include "debrisflow/exec/parallel.hpp"
 #include "debrisflow/sph/apparent_viscosity_k.hpp"
 #include "debrisflow/sph/interaction_k.hpp"
+#include "debrisflow/sph/sph_solver_gather.hpp"
 #include <cmath>
 #include <fmt/format.h>
 #include <numeric>
@@ -148,25 +149,6 @@ Real SphSolver::max_kinematic_viscosity() const {
                         [=](Index i) { return pv.is_fluid(i) ? pv.mu[i] / pv.rho[i] : Real(0); });
 }
 
-template <class F> void SphSolver::with_pair_terms(F&& f, bool pairs) {
-    update_pressure();
-    update_viscosity(pairs);
-    const bool sps = std::holds_alternative<models::LaminarSpsViscosity>(models_.viscosity);
-    if (sps && set_.sps_tau.size() != 6 * std::size_t(set_.size()))
-        set_.sps_tau.assign(6 * std::size_t(set_.size()), Real(0)); // first evaluation
-    auto pv = set_.view();
-    std::visit(
-        [&](const auto& kernel, const auto& visc, const auto& diff) {
-            using K = std::decay_t<decltype(kernel)>;
-            using V = std::decay_t<decltype(visc)>;
-            using D = std::decay_t<decltype(diff)>;
-            f(PairTerms<K, V, D>{pv, kernel, visc, diff, prho_.data(), cs_.data(), vol_.data(),
-                                 sps ? set_.sps_tau.data() : nullptr, Real(0.5) * params_.dp,
-                                 Real(0.01) * params_.h * params_.h});
-        },
-        models_.kernel, models_.viscosity, models_.diffusion);
-}
-
 void SphSolver::compute_forces() {
     ScopedTimer timer(t_forces_);
     auto pv = set_.view();
@@ -224,17 +206,7 @@ void SphSolver::compute_forces() {
 }
 
 void SphSolver::compute_forces_gather() {
-    const auto gv = grid_.view();
-    const SpsConstants sps = sps_constants();
-    const bool gradient = std::holds_alternative<models::LaminarSpsViscosity>(models_.viscosity);
-    tau_next_.assign(gradient ? 6 * std::size_t(set_.size()) : 0, Real(0));
-    with_pair_terms(
-        [&](const auto& terms) {
-            exec::for_each(set_.size(), make_gather(terms, gv, params_.gravity, sps.smag, sps.blin,
-                                                    tau_next_.data()));
-        },
-        false);
-    if (gradient) set_.sps_tau.swap(tau_next_);
+    with_gather([&](const auto& body) { exec::for_each(set_.size(), body); });
 }
 
 namespace {

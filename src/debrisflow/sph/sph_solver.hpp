@@ -50,6 +50,11 @@ public:
     // Force evaluation by the gather loop over the cell grid (the GPU layout); the scatter
     // loop over the half pair list (compute_forces) must give the same result.
     void compute_forces_gather();
+    // Hands f the gather loop body for the case's models and this state (pressures and
+    // apparent viscosities updated), a FluidInteraction<K, V, D> to run for i = 0 .. n-1 (on
+    // the host by compute_forces_gather, on a GPU by bench/gpu); then takes the SPS stresses
+    // it wrote as the particles'. Defined in sph_solver_gather.hpp.
+    template <class F> void with_gather(F&& f);
     // Initial time-step estimate from the parameters alone (before any motion).
     time::DtLimit initial_dt() const;
 
