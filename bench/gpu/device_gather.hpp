@@ -1,6 +1,6 @@
 #pragma once
 #include "debrisflow/sph/sph_solver.hpp"
-#include <stdexcept>
+#include "device_info.hpp"
 #include <string>
 
 namespace debrisflow::gpu {
@@ -11,14 +11,6 @@ struct DeviceTimes {
     std::string device;
     double upload_ms = 0, kernel_ms = 0, download_ms = 0;
 };
-
-// Thrown when no CUDA device can be used (no GPU, or a driver older than the runtime).
-struct NoDevice : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
-// The name of the first CUDA device; throws NoDevice when there is none.
-std::string first_device();
 
 // Runs the solver's gather force evaluation (SphSolver::with_gather) on the first CUDA device,
 // `repeats` times, and leaves its results in the particle set as compute_forces_gather does.

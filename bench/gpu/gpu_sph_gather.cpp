@@ -1,9 +1,8 @@
 // Runs one SPH force evaluation of a case both on the host (compute_forces_gather, OpenMP) and
 // on a GPU (the same FluidInteraction functor compiled by nvcc), compares the results and
 // reports both wall times. Exit status 1 when they differ by more than the tolerance, 77 when
-// there is no GPU, 2 on any other error.
-//   gpu_sph_gather CASE.toml [--set key=value]... [--advance T] [--repeat R] [--tolerance E]
-// --advance runs the case on the host to time T first, so that the state is a flowing one.
+// there is no GPU, 2 on any other error. Options: check_options.hpp.
+#include "check_options.hpp"
 #include "debrisflow/app/simulation.hpp"
 #include "debrisflow/core/stopwatch.hpp"
 #include "debrisflow/io/case_spec.hpp"
@@ -19,39 +18,6 @@
 using namespace debrisflow;
 
 namespace {
-
-struct Options {
-    std::string path;
-    std::vector<std::string> overrides;
-    Real advance = 0;
-    int repeat = 5;
-    double tolerance = 1e-9;
-};
-
-Options parse(int argc, char** argv) {
-    Options o;
-    for (int k = 1; k < argc; ++k) {
-        const std::string a = argv[k];
-        auto value = [&]() -> std::string {
-            if (k + 1 >= argc) throw std::runtime_error(a + " needs a value");
-            return argv[++k];
-        };
-        if (a == "--set")
-            o.overrides.push_back(value());
-        else if (a == "--advance")
-            o.advance = std::stod(value());
-        else if (a == "--repeat")
-            o.repeat = std::stoi(value());
-        else if (a == "--tolerance")
-            o.tolerance = std::stod(value());
-        else if (o.path.empty())
-            o.path = a;
-        else
-            throw std::runtime_error("unexpected argument " + a);
-    }
-    if (o.path.empty()) throw std::runtime_error("usage: gpu_sph_gather CASE.toml [options]");
-    return o;
-}
 
 // The outputs of one force evaluation.
 struct Forces {
@@ -76,16 +42,11 @@ double scaled_difference(const std::vector<Real>& a, const std::vector<Real>& b)
 } // namespace
 
 int main(int argc, char** argv) try {
-    const Options opt = parse(argc, argv);
+    const auto opt = gpu::CheckOptions::parse(argc, argv);
     gpu::first_device(); // before the host's work: no GPU, nothing to check
-    app::Simulation sim(io::read_case(opt.path, opt.overrides));
+    const auto loaded = opt.load();
+    app::Simulation& sim = *loaded;
     if (!sim.has_fluid()) throw std::runtime_error(opt.path + " has no SPH fluid");
-    if (opt.advance > 0) {
-        app::RunOptions run;
-        run.quiet = true;
-        run.until = opt.advance;
-        sim.run(run);
-    }
     auto& solver = sim.solver();
     solver.update_neighbors(true);
     auto& set = sim.particles();
@@ -135,7 +96,7 @@ int main(int argc, char** argv) try {
     return ok ? 0 : 1;
 } catch (const gpu::NoDevice& e) {
     std::fprintf(stderr, "gpu_sph_gather: no GPU to run on (%s)\n", e.what());
-    return 77; // ctest's SKIP_RETURN_CODE
+    return gpu::no_gpu_status;
 } catch (const std::exception& e) {
     std::fprintf(stderr, "gpu_sph_gather: %s\n", e.what());
     return 2;

@@ -53,6 +53,20 @@ Real DemSolver::drag_dt() const {
     return Real(0.5) / fluid_->max_rate;
 }
 
+DemSolver::GrainContactInputs DemSolver::grain_contact_inputs() {
+    refresh_hot();
+    return {hot_.data(),
+            grains_.size(),
+            grain_slots_.partners(),
+            grain_slots_.counts(),
+            grain_slots_.history(),
+            grain_slots_.capacity(),
+            PairTable{table_.data(), int(materials_.size())},
+            grid_.view(),
+            current_h_,
+            int(materials_.size())};
+}
+
 void DemSolver::update_neighbors(bool) {
     if (!built_) rebuild();
 }

@@ -74,6 +74,21 @@ public:
     Real unbalanced_ratio() const;
     long list_builds() const { return builds_; }
 
+    // What the grain-grain contact loop reads, for a backend that evaluates it elsewhere
+    // (bench/gpu): grain i's candidates are slots [i * capacity, i * capacity + count[i]).
+    struct GrainContactInputs {
+        const GrainState* grains; // the loop's interleaved copy of the grain state
+        Index n;
+        const Index *partner, *count;
+        ContactHistory* history;
+        Index capacity;
+        PairTable table;
+        neighbors::GridView grid; // separation() only (periodic images)
+        Real h;                   // size of the step the evaluation ends (spring increment)
+        int materials;
+    };
+    GrainContactInputs grain_contact_inputs();
+
     GrainSet& grains() { return grains_; }
     const GrainSet& grains() const { return grains_; }
     WallSet& walls() { return walls_; }

@@ -1,0 +1,119 @@
+// The DEM grain-grain contact law (dem::grain_pair_force, as DemSolver::forces calls it) run
+// on a GPU, one thread per contact slot, against the same functor on the host.
+#include "cuda_support.cuh"
+#include "device_contacts.hpp"
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace debrisflow::gpu {
+
+namespace {
+
+// Slot s = i * capacity + k: the contact of grain i with its k-th candidate. Writes the force
+// on i and the torques on i and j (9 reals) and the updated history; zeros and a cleared
+// history where the pair does not touch (as the engine's loop does).
+struct SlotContact {
+    dem::DemSolver::GrainContactInputs in;
+    const dem::ContactHistory* history_in;
+    Real* out;
+    dem::ContactHistory* history_out;
+
+    DF_HD void operator()(Index s) const {
+        const Index i = s / in.capacity, k = s % in.capacity;
+        Real* o = out + 9 * std::size_t(s);
+        for (int c = 0; c < 9; ++c) o[c] = 0;
+        dem::ContactHistory h = history_in[s];
+        if (k < in.count[i]) {
+            const dem::GrainState& si = in.grains[i];
+            const dem::GrainState& sj = in.grains[in.partner[s]];
+            const Vec3 r = in.grid.separation(si.x, sj.x);
+            const Real rs = si.r + sj.r, d2 = dot(r, r);
+            if (d2 < rs * rs) {
+                const auto c = dem::grain_pair_force(in.table(si.material, sj.material), si, sj, r,
+                                                     d2, in.h, h);
+                const Vec3 v[3] = {c.force_i, c.torque_i, c.torque_j};
+                for (int q = 0; q < 3; ++q)
+                    o[3 * q] = v[q].x, o[3 * q + 1] = v[q].y, o[3 * q + 2] = v[q].z;
+            } else {
+                h = dem::ContactHistory{};
+            }
+        }
+        history_out[s] = h;
+    }
+};
+
+// max |a - b| / max |b| over components [first, first + width) of records of `stride` reals.
+double scaled_difference(const std::vector<Real>& a, const std::vector<Real>& b, int stride,
+                         int first, int width) {
+    double diff = 0, scale = 0;
+    for (std::size_t s = 0; s + stride <= a.size(); s += stride)
+        for (int c = first; c < first + width; ++c) {
+            diff = std::max(diff, double(std::abs(a[s + c] - b[s + c])));
+            scale = std::max(scale, double(std::abs(b[s + c])));
+        }
+    return scale > 0 ? diff / scale : diff;
+}
+
+std::vector<Real> as_reals(const std::vector<dem::ContactHistory>& h) {
+    std::vector<Real> r;
+    r.reserve(6 * h.size());
+    for (const auto& x : h)
+        r.insert(r.end(), {x.xi.x, x.xi.y, x.xi.z, x.mroll.x, x.mroll.y, x.mroll.z});
+    return r;
+}
+
+} // namespace
+
+ContactComparison compare_grain_contacts(const dem::DemSolver::GrainContactInputs& in,
+                                         int repeats) {
+    ContactComparison cmp;
+    const std::size_t n = std::size_t(in.n), slots = n * std::size_t(in.capacity);
+    cmp.slots = long(slots);
+    for (std::size_t i = 0; i < n; ++i) cmp.candidates += in.count[i];
+
+    // host: the same functor, one thread
+    std::vector<Real> host_out(9 * slots);
+    std::vector<dem::ContactHistory> host_hist(slots);
+    const SlotContact host{in, in.history, host_out.data(), host_hist.data()};
+    const auto t0 = std::chrono::steady_clock::now();
+    for (std::size_t s = 0; s < slots; ++s) host(Index(s));
+    cmp.host_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    for (std::size_t s = 0; s < slots; ++s)
+        if (host_out[9 * s] != 0 || host_out[9 * s + 1] != 0 || host_out[9 * s + 2] != 0)
+            ++cmp.touching;
+
+    // device: the state, the slots, the history and the pair table copied over
+    DeviceArena a;
+    SlotContact dev = host;
+    dev.in.grains = a.copy_in(in.grains, n);
+    dev.in.partner = a.copy_in(in.partner, slots);
+    dev.in.count = a.copy_in(in.count, n);
+    dev.in.history = nullptr;                        // read through history_in
+    dev.in.grid.start = dev.in.grid.order = nullptr; // only separation() is used
+    dev.in.table.params = a.copy_in(in.table.params, std::size_t(in.materials * in.materials));
+    dev.history_in = a.copy_in(in.history, slots);
+    dev.out = a.alloc<Real>(9 * slots);
+    dev.history_out = a.alloc<dem::ContactHistory>(slots);
+    EventTimer timer;
+    std::vector<double> ms;
+    for (int r = 0; r < std::max(repeats, 1); ++r) {
+        timer.start();
+        launch(Index(slots), dev);
+        ms.push_back(timer.stop_ms());
+    }
+    cmp.kernel_ms = median(ms);
+    std::vector<Real> dev_out(9 * slots);
+    std::vector<dem::ContactHistory> dev_hist(slots);
+    copy_out(dev_out.data(), dev.out, dev_out.size());
+    copy_out(dev_hist.data(), dev.history_out, slots);
+
+    cmp.force = scaled_difference(dev_out, host_out, 9, 0, 3);
+    cmp.torque = scaled_difference(dev_out, host_out, 9, 3, 6);
+    const auto hd = as_reals(dev_hist), hh = as_reals(host_hist);
+    cmp.history = std::max(scaled_difference(hd, hh, 6, 0, 3), scaled_difference(hd, hh, 6, 3, 3));
+    return cmp;
+}
+
+} // namespace debrisflow::gpu
