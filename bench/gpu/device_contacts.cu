@@ -2,6 +2,7 @@
 // on a GPU, one thread per contact slot, against the same functor on the host.
 #include "cuda_support.cuh"
 #include "device_contacts.hpp"
+#include "scaled_difference.hpp"
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -42,18 +43,6 @@ struct SlotContact {
         history_out[s] = h;
     }
 };
-
-// max |a - b| / max |b| over components [first, first + width) of records of `stride` reals.
-double scaled_difference(const std::vector<Real>& a, const std::vector<Real>& b, int stride,
-                         int first, int width) {
-    double diff = 0, scale = 0;
-    for (std::size_t s = 0; s + stride <= a.size(); s += stride)
-        for (int c = first; c < first + width; ++c) {
-            diff = std::max(diff, double(std::abs(a[s + c] - b[s + c])));
-            scale = std::max(scale, double(std::abs(b[s + c])));
-        }
-    return scale > 0 ? diff / scale : diff;
-}
 
 std::vector<Real> as_reals(const std::vector<dem::ContactHistory>& h) {
     std::vector<Real> r;

@@ -7,6 +7,7 @@
 #include "debrisflow/core/stopwatch.hpp"
 #include "debrisflow/io/case_spec.hpp"
 #include "device_gather.hpp"
+#include "scaled_difference.hpp"
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -16,6 +17,7 @@
 #include <vector>
 
 using namespace debrisflow;
+using gpu::scaled_difference;
 
 namespace {
 
@@ -26,18 +28,6 @@ struct Forces {
         return {s.ax, s.ay, s.az, s.drho, s.sps_tau};
     }
 };
-
-// max_i |a_i - b_i| / max_i |b_i|: the difference relative to the field's scale (sums that
-// cancel make per-particle relative differences meaningless).
-double scaled_difference(const std::vector<Real>& a, const std::vector<Real>& b) {
-    if (a.size() != b.size()) return INFINITY;
-    double diff = 0, scale = 0;
-    for (std::size_t i = 0; i < a.size(); ++i) {
-        diff = std::max(diff, double(std::abs(a[i] - b[i])));
-        scale = std::max(scale, double(std::abs(b[i])));
-    }
-    return scale > 0 ? diff / scale : diff;
-}
 
 } // namespace
 
