@@ -11,39 +11,6 @@ namespace debrisflow::gpu {
 
 namespace {
 
-// Slot s = i * capacity + k: the contact of grain i with its k-th candidate. Writes the force
-// on i and the torques on i and j (9 reals) and the updated history; zeros and a cleared
-// history where the pair does not touch (as the engine's loop does).
-struct SlotContact {
-    dem::DemSolver::GrainContactInputs in;
-    const dem::ContactHistory* history_in;
-    Real* out;
-    dem::ContactHistory* history_out;
-
-    DF_HD void operator()(Index s) const {
-        const Index i = s / in.capacity, k = s % in.capacity;
-        Real* o = out + 9 * std::size_t(s);
-        for (int c = 0; c < 9; ++c) o[c] = 0;
-        dem::ContactHistory h = history_in[s];
-        if (k < in.count[i]) {
-            const dem::GrainState& si = in.grains[i];
-            const dem::GrainState& sj = in.grains[in.partner[s]];
-            const Vec3 r = in.grid.separation(si.x, sj.x);
-            const Real rs = si.r + sj.r, d2 = dot(r, r);
-            if (d2 < rs * rs) {
-                const auto c = dem::grain_pair_force(in.table(si.material, sj.material), si, sj, r,
-                                                     d2, in.h, h);
-                const Vec3 v[3] = {c.force_i, c.torque_i, c.torque_j};
-                for (int q = 0; q < 3; ++q)
-                    o[3 * q] = v[q].x, o[3 * q + 1] = v[q].y, o[3 * q + 2] = v[q].z;
-            } else {
-                h = dem::ContactHistory{};
-            }
-        }
-        history_out[s] = h;
-    }
-};
-
 std::vector<Real> as_reals(const std::vector<dem::ContactHistory>& h) {
     std::vector<Real> r;
     r.reserve(6 * h.size());
@@ -54,8 +21,7 @@ std::vector<Real> as_reals(const std::vector<dem::ContactHistory>& h) {
 
 } // namespace
 
-ContactComparison compare_grain_contacts(const dem::DemSolver::GrainContactInputs& in,
-                                         int repeats) {
+ContactComparison compare_grain_contacts(const dem::GrainContactInputs& in, int repeats) {
     ContactComparison cmp;
     const std::size_t n = std::size_t(in.n), slots = n * std::size_t(in.capacity);
     cmp.slots = long(slots);
@@ -64,7 +30,7 @@ ContactComparison compare_grain_contacts(const dem::DemSolver::GrainContactInput
     // host: the same functor, one thread
     std::vector<Real> host_out(9 * slots);
     std::vector<dem::ContactHistory> host_hist(slots);
-    const SlotContact host{in, in.history, host_out.data(), host_hist.data()};
+    const dem::GrainSlotContact host{in, in.history, host_out.data(), host_hist.data()};
     const auto t0 = std::chrono::steady_clock::now();
     for (std::size_t s = 0; s < slots; ++s) host(Index(s));
     cmp.host_ms =
@@ -75,7 +41,7 @@ ContactComparison compare_grain_contacts(const dem::DemSolver::GrainContactInput
 
     // device: the state, the slots, the history and the pair table copied over
     DeviceArena a;
-    SlotContact dev = host;
+    dem::GrainSlotContact dev = host;
     dev.in.grains = a.copy_in(in.grains, n);
     dev.in.partner = a.copy_in(in.partner, slots);
     dev.in.count = a.copy_in(in.count, n);

@@ -15,6 +15,6 @@ struct ContactComparison {
 // Evaluates the contact law (dem::grain_pair_force) of every slot of `in` on the host and on
 // the first CUDA device, from the same state and history, and compares them. Leaves the
 // solver's state unchanged.
-ContactComparison compare_grain_contacts(const dem::DemSolver::GrainContactInputs& in, int repeats);
+ContactComparison compare_grain_contacts(const dem::GrainContactInputs& in, int repeats);
 
 } // namespace debrisflow::gpu

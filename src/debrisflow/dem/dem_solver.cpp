@@ -53,7 +53,7 @@ Real DemSolver::drag_dt() const {
     return Real(0.5) / fluid_->max_rate;
 }
 
-DemSolver::GrainContactInputs DemSolver::grain_contact_inputs() {
+GrainContactInputs DemSolver::grain_contact_inputs() {
     refresh_hot();
     return {hot_.data(),
             grains_.size(),

@@ -4,6 +4,7 @@
 #include "debrisflow/dem/fluid_load.hpp"
 #include "debrisflow/dem/grain_contact_k.hpp"
 #include "debrisflow/dem/grain_set.hpp"
+#include "debrisflow/dem/grain_slot_contact_k.hpp"
 #include "debrisflow/dem/materials.hpp"
 #include "debrisflow/dem/obstacles.hpp"
 #include "debrisflow/dem/wall_set.hpp"
@@ -75,18 +76,7 @@ public:
     long list_builds() const { return builds_; }
 
     // What the grain-grain contact loop reads, for a backend that evaluates it elsewhere
-    // (bench/gpu): grain i's candidates are slots [i * capacity, i * capacity + count[i]).
-    struct GrainContactInputs {
-        const GrainState* grains; // the loop's interleaved copy of the grain state
-        Index n;
-        const Index *partner, *count;
-        ContactHistory* history;
-        Index capacity;
-        PairTable table;
-        neighbors::GridView grid; // separation() only (periodic images)
-        Real h;                   // size of the step the evaluation ends (spring increment)
-        int materials;
-    };
+    // (bench/gpu) or a check of it (GrainSlotContact evaluates one slot as the loop does).
     GrainContactInputs grain_contact_inputs();
 
     GrainSet& grains() { return grains_; }

@@ -1,0 +1,58 @@
+#pragma once
+#include "debrisflow/dem/contact_params.hpp"
+#include "debrisflow/dem/grain_contact_k.hpp"
+#include "debrisflow/neighbors/grid_view_k.hpp"
+#include <type_traits>
+
+namespace debrisflow::dem {
+
+// What DemSolver's grain-grain contact loop reads (DemSolver::grain_contact_inputs): grain
+// i's candidates are slots [i * capacity, i * capacity + count[i]).
+struct GrainContactInputs {
+    const GrainState* grains; // the loop's interleaved copy of the grain state
+    Index n;
+    const Index *partner, *count;
+    ContactHistory* history;
+    Index capacity;
+    PairTable table;
+    neighbors::GridView grid; // separation() only (periodic images)
+    Real h;                   // size of the step the evaluation ends (spring increment)
+    int materials;
+};
+static_assert(std::is_trivially_copyable_v<GrainContactInputs>);
+
+// One contact slot s = i * capacity + k as DemSolver::forces evaluates it (grain_pair_force):
+// writes the force on i and the torques on i and j (9 reals at out + 9 s) and the updated
+// history; zeros and a cleared history where the pair does not touch; zeros and the history
+// unchanged for an empty slot. Reads history_in, writes history_out (may be the same array).
+struct GrainSlotContact {
+    GrainContactInputs in;
+    const ContactHistory* history_in;
+    Real* out;
+    ContactHistory* history_out;
+
+    DF_HD void operator()(Index s) const {
+        const Index i = s / in.capacity, k = s % in.capacity;
+        Real* o = out + 9 * std::size_t(s);
+        for (int c = 0; c < 9; ++c) o[c] = 0;
+        ContactHistory h = history_in[s];
+        if (k < in.count[i]) {
+            const GrainState& si = in.grains[i];
+            const GrainState& sj = in.grains[in.partner[s]];
+            const Vec3 r = in.grid.separation(si.x, sj.x);
+            const Real rs = si.r + sj.r, d2 = dot(r, r);
+            if (d2 < rs * rs) {
+                const auto c =
+                    grain_pair_force(in.table(si.material, sj.material), si, sj, r, d2, in.h, h);
+                const Vec3 v[3] = {c.force_i, c.torque_i, c.torque_j};
+                for (int q = 0; q < 3; ++q)
+                    o[3 * q] = v[q].x, o[3 * q + 1] = v[q].y, o[3 * q + 2] = v[q].z;
+            } else {
+                h = ContactHistory{};
+            }
+        }
+        history_out[s] = h;
+    }
+};
+
+} // namespace debrisflow::dem
