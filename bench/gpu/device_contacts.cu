@@ -47,7 +47,7 @@ ContactComparison compare_grain_contacts(const dem::GrainContactInputs& in, int 
     dev.in.count = a.copy_in(in.count, n);
     dev.in.history = nullptr;                        // read through history_in
     dev.in.grid.start = dev.in.grid.order = nullptr; // only separation() is used
-    dev.in.table.params = a.copy_in(in.table.params, std::size_t(in.materials * in.materials));
+    dev.in.table.params = a.copy_in(in.table.params, std::size_t(in.table.count * in.table.count));
     dev.history_in = a.copy_in(in.history, slots);
     dev.out = a.alloc<Real>(9 * slots);
     dev.history_out = a.alloc<dem::ContactHistory>(slots);

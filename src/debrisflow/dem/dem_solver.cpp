@@ -63,8 +63,7 @@ GrainContactInputs DemSolver::grain_contact_inputs() {
             grain_slots_.capacity(),
             PairTable{table_.data(), int(materials_.size())},
             grid_.view(),
-            current_h_,
-            int(materials_.size())};
+            current_h_};
 }
 
 void DemSolver::update_neighbors(bool) {
@@ -251,15 +250,8 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
             for (Index k = 0; k < ci; ++k) {
                 const Index j = gp[base + std::size_t(k)];
                 ContactHistory& h = gh[base + std::size_t(k)];
-                const GrainState& sj = hot[j];
-                const Vec3 r = grid.separation(si.x, sj.x);
-                const Real rs = si.r + sj.r, d2 = dot(r, r);
-                if (d2 >= rs * rs) {
-                    h = ContactHistory{};
-                    continue;
-                }
-                const GrainPairForce c =
-                    grain_pair_force(table(si.material, sj.material), si, sj, r, d2, h_contact, h);
+                GrainPairForce c;
+                if (!grain_slot_force(table, grid, si, hot[j], h_contact, h, c)) continue;
                 fi += c.force_i;
                 ti += c.torque_i;
                 Real* bj = b + 6 * std::size_t(j);

@@ -17,11 +17,25 @@ struct GrainContactInputs {
     PairTable table;
     neighbors::GridView grid; // separation() only (periodic images)
     Real h;                   // size of the step the evaluation ends (spring increment)
-    int materials;
 };
 static_assert(std::is_trivially_copyable_v<GrainContactInputs>);
 
-// One contact slot s = i * capacity + k as DemSolver::forces evaluates it (grain_pair_force):
+// Grain i's contact with candidate j, as the contact loop evaluates every slot: true and the
+// force in c when they touch; false, and the slot's history cleared, when they do not.
+DF_HD inline bool grain_slot_force(const PairTable& table, const neighbors::GridView& grid,
+                                   const GrainState& si, const GrainState& sj, Real h,
+                                   ContactHistory& history, GrainPairForce& c) {
+    const Vec3 r = grid.separation(si.x, sj.x);
+    const Real rs = si.r + sj.r, d2 = dot(r, r);
+    if (d2 >= rs * rs) {
+        history = ContactHistory{};
+        return false;
+    }
+    c = grain_pair_force(table(si.material, sj.material), si, sj, r, d2, h, history);
+    return true;
+}
+
+// One contact slot s = i * capacity + k as DemSolver::forces evaluates it (grain_slot_force):
 // writes the force on i and the torques on i and j (9 reals at out + 9 s) and the updated
 // history; zeros and a cleared history where the pair does not touch; zeros and the history
 // unchanged for an empty slot. Reads history_in, writes history_out (may be the same array).
@@ -36,20 +50,12 @@ struct GrainSlotContact {
         Real* o = out + 9 * std::size_t(s);
         for (int c = 0; c < 9; ++c) o[c] = 0;
         ContactHistory h = history_in[s];
-        if (k < in.count[i]) {
-            const GrainState& si = in.grains[i];
-            const GrainState& sj = in.grains[in.partner[s]];
-            const Vec3 r = in.grid.separation(si.x, sj.x);
-            const Real rs = si.r + sj.r, d2 = dot(r, r);
-            if (d2 < rs * rs) {
-                const auto c =
-                    grain_pair_force(in.table(si.material, sj.material), si, sj, r, d2, in.h, h);
-                const Vec3 v[3] = {c.force_i, c.torque_i, c.torque_j};
-                for (int q = 0; q < 3; ++q)
-                    o[3 * q] = v[q].x, o[3 * q + 1] = v[q].y, o[3 * q + 2] = v[q].z;
-            } else {
-                h = ContactHistory{};
-            }
+        GrainPairForce c;
+        if (k < in.count[i] && grain_slot_force(in.table, in.grid, in.grains[i],
+                                                in.grains[in.partner[s]], in.h, h, c)) {
+            const Vec3 v[3] = {c.force_i, c.torque_i, c.torque_j};
+            for (int q = 0; q < 3; ++q)
+                o[3 * q] = v[q].x, o[3 * q + 1] = v[q].y, o[3 * q + 2] = v[q].z;
         }
         history_out[s] = h;
     }
