@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 for t in 1 2; do
     out="runs/bench/dambreak3d_t$t"
-    build/debrisflow run cases/bench/dambreak3d.toml --out "$out" --threads "$t" --quiet \
+    build/debrisflow run cases/bench/dambreak3d.toml --out "$out" --overwrite --threads "$t" --quiet \
         --set output.vtk=false "$@"
     /usr/bin/python3 - "$out/summary.json" <<'PY'
 import json, sys

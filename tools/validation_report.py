@@ -47,7 +47,7 @@ def read_probe(path):
 
 
 def run(build, case, out, sets):
-    cmd = [os.path.join(build, "debrisflow"), "run", case, "--out", out, "--quiet",
+    cmd = [os.path.join(build, "debrisflow"), "run", case, "--out", out, "--overwrite", "--quiet",
            "--set", "output.vtk=false"]
     for s in sets:
         cmd += ["--set", s]

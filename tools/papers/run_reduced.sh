@@ -98,7 +98,7 @@ one() { # NAME CASE ARGS...
     return
   fi
   local t0=$SECONDS
-  "$BIN" run "$case" --out "$OUT/$name" --threads "$THREADS" "$@" >"$OUT/$name.log" 2>&1
+  "$BIN" run "$case" --out "$OUT/$name" --overwrite --threads "$THREADS" "$@" >"$OUT/$name.log" 2>&1
   local rc=$?
   rmdir "$OUT/$name.lock"
   echo "$name: exit $rc after $((SECONDS - t0)) s"

@@ -1,9 +1,15 @@
 // debrisflow command line: run and check case files.
+#include "debrisflow/app/build_info.hpp"
 #include "debrisflow/app/simulation.hpp"
 #include "debrisflow/app/stop_request.hpp"
 #include "debrisflow/core/error.hpp"
+#include "debrisflow/core/memory_budget.hpp"
+#include "debrisflow/exec/parallel.hpp"
 #include "debrisflow/io/case_spec.hpp"
+#include "debrisflow/io/output_dir.hpp"
+#include "debrisflow/scenario/resource_estimate.hpp"
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <filesystem>
 #include <fmt/format.h>
 #include <iostream>
@@ -13,9 +19,52 @@ using namespace debrisflow;
 
 namespace {
 
+// The global step a run starts with and what limits it (as `check` prints it).
+struct StepEstimate {
+    Real dt = std::numeric_limits<Real>::max();
+    std::string limiter;
+};
+
+StepEstimate estimate_step(app::Simulation& sim) {
+    const io::CaseSpec& spec = sim.spec();
+    StepEstimate e;
+    if (sim.has_fluid()) {
+        const auto d = sim.solver().initial_dt();
+        e = {d.dt, "sph/" + d.limiter};
+    }
+    if (sim.has_grains() && !spec.dem.params.subcycle && sim.grains().dt() < e.dt)
+        e = {sim.grains().dt(), "dem"};
+    if (sim.has_bodies() && spec.rigid.dt > 0 && spec.rigid.dt < e.dt)
+        e = {spec.rigid.dt, "rigid dt"};
+    const bool fem_alone = !sim.has_fluid() && !sim.has_grains() && !sim.has_bodies();
+    if (sim.has_fem() && fem_alone && sim.fem().critical_dt() < e.dt)
+        e = {sim.fem().critical_dt(), "fem element CFL"};
+    return e;
+}
+
+// A run of more than 1e10 steps cannot end on any machine (days at a microsecond a step);
+// `check` and `run` refuse it, naming the step, what limits it and the end time.
+void require_feasible_steps(app::Simulation& sim) {
+    const StepEstimate e = estimate_step(sim);
+    const io::CaseSpec& spec = sim.spec();
+    if (!(e.dt > 0) || !std::isfinite(e.dt))
+        throw InputError(fmt::format("{}: the time step is {} s ({}); check the material and "
+                                     "fluid parameters",
+                                     spec.time_origin.at("end"), e.dt, e.limiter));
+    const double steps = double(spec.t_end) / double(e.dt);
+    if (steps > 1e10)
+        throw InputError(fmt::format(
+            "{}: time.end = {} s needs about {:.3g} steps of {:.3g} s (limited by {}): more than "
+            "1e10 steps cannot finish; shorten time.end, or coarsen what limits the step (dp, "
+            "the smallest grain, the stiffness)",
+            spec.time_origin.at("end"), spec.t_end, steps, e.dt, e.limiter));
+}
+
 int check(const std::string& file, const std::vector<std::string>& sets) {
     const io::CaseSpec spec = io::read_case(file, sets);
+    const auto estimate = scenario::estimate_resources(spec);
     app::Simulation sim(spec);
+    require_feasible_steps(sim);
     const auto& set = sim.particles();
     const long fluid = set.count(particles::Kind::fluid);
     const long boundary = set.count(particles::Kind::boundary);
@@ -24,16 +73,16 @@ int check(const std::string& file, const std::vector<std::string>& sets) {
                              spec.t_end);
     std::cout << fmt::format("particles: {} fluid, {} boundary, {} grains, {} total\n", fluid,
                              boundary, grains, fluid + boundary + grains);
-    std::cout << fmt::format("memory estimate: {:.1f} MiB\n", sim.memory_bytes() / 1048576.0);
-    Real dt = std::numeric_limits<Real>::max();
-    std::string limiter;
+    std::cout << fmt::format("memory estimate: {:.1f} MiB (before building: {:.1f} MiB; budget "
+                             "{}); threads: {}\n",
+                             sim.memory_bytes() / 1048576.0, estimate.total_bytes() / 1048576.0,
+                             format_bytes(memory_budget_bytes()), exec::max_threads());
     if (sim.has_fluid()) {
         const auto d = sim.solver().initial_dt();
         std::cout << fmt::format("sph: dp = {} m, kernel {}, h = {:.4g} m, c0 = {:.4g} m/s; "
                                  "initial dt {:.4g} s ({})\n",
                                  spec.dp, spec.sph.kernel, spec.sph.h, spec.sph.c0, d.dt,
                                  d.limiter);
-        dt = d.dt, limiter = "sph/" + d.limiter;
     }
     if (sim.has_grains()) {
         const auto& d = sim.grains();
@@ -44,7 +93,6 @@ int check(const std::string& file, const std::vector<std::string>& sets) {
                                  spec.dem.params.dt > 0 ? "user" : "automatic", d.automatic_dt().dt,
                                  d.automatic_dt().limiter, d.stability_dt().dt,
                                  spec.dem.params.subcycle ? ", sub-cycled" : "");
-        if (!spec.dem.params.subcycle && d.dt() < dt) dt = d.dt(), limiter = "dem";
     }
     if (sim.has_bodies()) {
         const auto& r = sim.bodies();
@@ -58,7 +106,6 @@ int check(const std::string& file, const std::vector<std::string>& sets) {
                                      r.models()[b].vertices.size() + r.models()[b].spheres.size(),
                                      r.models()[b].samples.size());
         }
-        if (spec.rigid.dt > 0 && spec.rigid.dt < dt) dt = spec.rigid.dt, limiter = "rigid dt";
     }
     if (sim.has_fem()) {
         const auto& f = sim.fem();
@@ -72,7 +119,6 @@ int check(const std::string& file, const std::vector<std::string>& sets) {
         const bool alone = !sim.has_fluid() && !sim.has_grains() && !sim.has_bodies();
         std::cout << fmt::format("fem: critical step {:.4g} s{}\n", f.critical_dt(),
                                  alone ? "" : " (sub-cycled inside the global step)");
-        if (alone && f.critical_dt() < dt) dt = f.critical_dt(), limiter = "fem element CFL";
     }
     for (const auto& w : spec.walls)
         if (!w.structure.empty())
@@ -94,36 +140,67 @@ int check(const std::string& file, const std::vector<std::string>& sets) {
             "feed '{}': Q_s(0) = {:.4g} m^3/s of rocks of material '{}' ({} shapes, "
             "sphericity within +-{:.0f} %)\n",
             f.name, f.discharge.front(), f.material, f.rocks.size(), 100 * f.sphericity_tolerance);
-    std::cout << fmt::format("time step: {:.4g} s ({}); about {:.0f} steps to the end time\n", dt,
-                             limiter, spec.t_end / dt);
+    const StepEstimate step = estimate_step(sim);
+    std::cout << fmt::format("time step: {:.4g} s ({}); about {:.0f} steps to the end time\n",
+                             step.dt, step.limiter, spec.t_end / step.dt);
     return 0;
 }
 
 } // namespace
 
 int main(int argc, char** argv) {
-    CLI::App cli{"debrisflow: particle simulation of debris flows and floods against structures"};
-    cli.require_subcommand(1);
-    std::string file, out;
+    CLI::App cli{"debrisflow: particle simulation of debris flows and floods against structures\n"
+                 "exit codes: 0 done, 2 bad input or usage, 3 the run went unstable (output "
+                 "kept),\n130 stopped by a signal (output kept), 1 internal error"};
+    cli.require_subcommand(0, 1);
+    std::string file, out, max_memory;
     std::vector<std::string> sets;
     int threads = 0;
-    bool quiet = false;
+    bool quiet = false, overwrite = false, version = false;
+    cli.add_flag("--version", version, "print the version, git revision and build options");
+    const auto threads_range = CLI::Range(1, 4096);
     auto* run = cli.add_subcommand("run", "run a case");
     run->add_option("case", file, "case file (TOML)")->required();
     run->add_option("--out", out, "output folder (default: out/<case name>)");
     run->add_option("--set", sets, "override a key: --set time.end=0.05")->take_all();
     run->add_option("--threads", threads, "OpenMP threads (default: all cores)")
-        ->check(CLI::PositiveNumber);
+        ->check(threads_range);
     run->add_flag("--quiet", quiet, "only errors on the terminal");
+    run->add_flag("--overwrite", overwrite,
+                  "replace the results of an earlier run in the output folder");
+    run->add_option("--max-memory", max_memory,
+                    "refuse cases estimated to need more memory (e.g. 4G; default: the "
+                    "machine's memory)");
     auto* chk = cli.add_subcommand("check", "validate a case and print what it would run");
     chk->add_option("case", file, "case file (TOML)")->required();
     chk->add_option("--set", sets, "override a key")->take_all();
-    CLI11_PARSE(cli, argc, argv);
+    chk->add_option("--threads", threads, "OpenMP threads used to build the case")
+        ->check(threads_range);
+    chk->add_option("--max-memory", max_memory, "as for run");
     try {
+        cli.parse(argc, argv);
+        if (!version && !run->parsed() && !chk->parsed()) {
+            std::cerr << cli.help();
+            return 2; // no subcommand: a usage error
+        }
+    } catch (const CLI::ParseError& e) {
+        const int rc = cli.exit(e); // prints the message or the help
+        return rc == 0 ? 0 : 2;     // usage errors are bad input, like a bad case file
+    }
+    if (version) {
+        std::cout << fmt::format("debrisflow {} (git {})\nbuild: {}\n", DEBRISFLOW_VERSION,
+                                 app::build_revision(), app::build_options());
+        return 0;
+    }
+    try {
+        if (!max_memory.empty()) set_memory_budget_bytes(parse_bytes(max_memory));
+        if (threads > 0) exec::set_threads(threads);
         if (chk->parsed()) return check(file, sets);
         const io::CaseSpec spec = io::read_case(file, sets);
         if (out.empty()) out = "out/" + spec.name;
         app::Simulation sim(spec);
+        require_feasible_steps(sim);
+        io::prepare_output_dir(out, overwrite);
         app::install_stop_handlers();
         sim.run({out, quiet, threads});
         return 0;
@@ -136,8 +213,13 @@ int main(int argc, char** argv) {
     } catch (const InstabilityError& e) {
         std::cerr << "error: the run went unstable: " << e.what() << "\n";
         return 3;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "error: out of memory: the case needs more than this machine can give "
+                     "(its estimate is printed by `debrisflow check`); coarsen it or set "
+                     "--max-memory\n";
+        return 2;
     } catch (const std::exception& e) {
-        std::cerr << "error: " << e.what() << "\n";
+        std::cerr << "error: internal error: " << e.what() << "\n";
         return 1;
     }
 }

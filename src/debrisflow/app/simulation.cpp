@@ -8,6 +8,7 @@
 #include "debrisflow/scenario/build_fem.hpp"
 #include "debrisflow/scenario/build_grains.hpp"
 #include "debrisflow/scenario/build_particles.hpp"
+#include "debrisflow/scenario/resource_estimate.hpp"
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -17,6 +18,8 @@
 namespace debrisflow::app {
 
 Simulation::Simulation(io::CaseSpec spec) : spec_(std::move(spec)) {
+    // Nothing is allocated for a case that cannot fit in memory (or --max-memory).
+    scenario::require_within_budget(scenario::estimate_resources(spec_));
     std::vector<scenario::BuiltBody> bodies;
     if (spec_.has_bodies()) bodies = scenario::build_body_geometry(spec_);
     ParticleId first_body_particle = 0;
@@ -53,7 +56,7 @@ Simulation::Simulation(io::CaseSpec spec) : spec_(std::move(spec)) {
                     throw InputError(fmt::format(
                         "{}: body '{}' has no contact spheres for the grains; set [rigid] "
                         "contact_spacing (m)",
-                        spec_.file, rigid_->models()[b].name));
+                        spec_.rigid.bodies[b].origin.block(), rigid_->models()[b].name));
             rigid_->attach_grains(&obstacles_);
             dem_->attach_obstacles(&obstacles_);
         }
@@ -65,7 +68,8 @@ Simulation::Simulation(io::CaseSpec spec) : spec_(std::move(spec)) {
         if (p.dt > 0 && p.dt > stable.dt)
             throw InputError(fmt::format("{}: dem.dt = {:.4g} s exceeds the stable step {:.4g} s "
                                          "({}); use dem.dt <= {:.4g} s",
-                                         spec_.file, p.dt, stable.dt, stable.limiter, stable.dt));
+                                         spec_.dem_origin.at("dt"), p.dt, stable.dt,
+                                         stable.limiter, stable.dt));
     }
     for (const auto& p : spec_.probes) probes_.push_back(probes::make_probe(p, spec_));
     for (const auto& in : spec_.inlets) {
@@ -124,21 +128,11 @@ probes::Probe& Simulation::probe(const std::string& name) {
 }
 
 std::size_t Simulation::memory_bytes() const {
-    // Grains: 19 Real + material + id, and about 12 contact slots (index, key, 6-Real history).
-    const std::size_t grains =
-        std::size_t(grains_.size()) *
-        (19 * sizeof(Real) + 5 + 12 * (8 + 6 * sizeof(Real)) + 6 * sizeof(Real));
-    if (!solver_) return grains;
-    const std::size_t n = std::size_t(set_.size());
-    // Particle fields (21 Real + kind + group + id), doubled while reordering; integrator
-    // copies (7 Real); grid arrays; half pair list: half the neighbours within support + skin
-    // (1.1 support) plus 25 % capacity slack, 4 bytes each.
-    const double pi = 3.14159265358979, reach = 1.1 * solver_->support() / spec_.dp;
-    const double neighbours =
-        spec_.dim == 3 ? 4.0 / 3.0 * pi * reach * reach * reach : pi * reach * reach;
-    const std::size_t list = std::size_t(0.5 * neighbours * 1.25) * sizeof(Index);
-    return grains + n * (2 * (21 * sizeof(Real) + 1 + 2 + 8) + 7 * sizeof(Real) +
-                         3 * sizeof(Index) + list + 4 * sizeof(Real) * 2);
+    const double grains = double(grains_.size()) * scenario::bytes_per_grain();
+    if (!solver_) return std::size_t(grains);
+    const double particle =
+        scenario::sph_bytes_per_particle(spec_.dim, solver_->support() / spec_.dp);
+    return std::size_t(grains + double(set_.size()) * particle);
 }
 
 void Simulation::settle_grains() {

@@ -1,6 +1,8 @@
 #include "debrisflow/dem/materials.hpp"
 #include "debrisflow/dem/contact_laws_k.hpp"
 #include <cmath>
+#include "debrisflow/core/error.hpp"
+#include <fmt/format.h>
 #include <stdexcept>
 
 namespace debrisflow::dem {
@@ -34,9 +36,13 @@ Real tsuji_restitution(Real alpha) {
 
 Real tsuji_alpha(Real e) {
     if (e >= 1) return 0;
-    if (e <= 0) throw std::invalid_argument("restitution must be > 0 for hertz_mindlin");
+    if (!(e >= hertz_min_restitution))
+        throw InputError(fmt::format("restitution {} of a hertz_mindlin pair is below {}: the "
+                                     "Tsuji damping is that of an overdamped contact there",
+                                     e, hertz_min_restitution));
+    // e(alpha) falls monotonically: e(64) = 3e-4 < hertz_min_restitution, so hi stays <= 64.
     Real lo = 0, hi = 1;
-    while (tsuji_restitution(hi) > e) hi *= 2;
+    while (tsuji_restitution(hi) > e && hi < 64) hi *= 2;
     for (int it = 0; it < 50; ++it) {
         const Real mid = 0.5 * (lo + hi);
         (tsuji_restitution(mid) > e ? lo : hi) = mid;

@@ -35,6 +35,9 @@ Real linear_damping_ratio(Real e);
 // shows that e depends on alpha only (Tsuji et al. 1992; Antypov & Elliott 2011); it is
 // integrated accurately and inverted by bisection.
 Real tsuji_alpha(Real e);
+// The least restitution tsuji_alpha accepts (alpha = 22); below it the contact is overdamped
+// and the map from e to alpha is ill-conditioned. Case files are checked against it.
+inline constexpr Real hertz_min_restitution = 0.01;
 // Restitution of that oscillator for a given alpha (the forward map used by tsuji_alpha).
 Real tsuji_restitution(Real alpha);
 

@@ -85,7 +85,11 @@ void read_sph(const ConfigTable& t, CaseSpec& c) {
     p.dim = c.dim;
     p.dp = c.dp;
     p.kernel = t.choice("kernel", kernels::KernelRegistry::names(), "wendland_c2");
-    p.h = t.positive("h_over_dp", p.kernel == "cubic_spline" ? std::sqrt(3.0) : 1.5) * c.dp;
+    const Real h_over_dp = t.positive("h_over_dp", p.kernel == "cubic_spline" ? std::sqrt(3.0) : 1.5);
+    if (h_over_dp < 0.5 || h_over_dp > 4)
+        t.fail("h_over_dp", "must be within [0.5, 4] (usual: 1.2 to 2; each particle then has "
+                            "a few dozen to a few hundred neighbours)");
+    p.h = h_over_dp * c.dp;
     p.rho0 = t.positive("rho0", 1000);
     p.gamma = t.positive("gamma", 7);
     if (t.has("c0") && t.has("c0_coefficient"))
@@ -118,7 +122,7 @@ void read_sph(const ConfigTable& t, CaseSpec& c) {
     if (p.delta < 0 || p.delta > 1) t.fail("delta", "must be within [0, 1]");
     p.cfl = t.positive("cfl", 0.2);
     if (p.cfl > 1) t.fail("cfl", "must be <= 1");
-    p.reorder_every = int(t.integer("reorder_every", 1));
+    p.reorder_every = int(t.integer("reorder_every", 1, 0, 1000000000));
     // Without gravity in the fluid there is no hydrostatic pressure; immersed bodies then get
     // its exact resultant, the buoyancy rho0 V g (sedimentation in closed boxes).
     c.fluid_gravity = t.boolean("fluid_gravity", true);
@@ -135,6 +139,8 @@ sph::Domain read_domain(const ConfigTable& t, int dim) {
     for (int k = 0; k < 3; ++k)
         if (!(dim == 2 && k == 1) && !(d.hi[k] > d.lo[k]))
             t.fail("max", fmt::format("must exceed min in {}", "xyz"[k]));
+        else if (!std::isfinite(d.hi[k] - d.lo[k]))
+            t.fail("max", fmt::format("the extent in {} overflows (not a finite number)", "xyz"[k]));
     if (t.has("periodic")) {
         for (const auto& s : t.strings("periodic")) {
             if (s == "x")
@@ -152,9 +158,20 @@ sph::Domain read_domain(const ConfigTable& t, int dim) {
     return d;
 }
 
+// A point probe outside the domain would read nothing (p = 0) for the whole run.
+void require_in_domain(const ConfigTable& t, const std::string& key, Vec3 p, const CaseSpec& c) {
+    for (int d = 0; d < 3; ++d)
+        if (!(c.dim == 2 && d == 1) && (p[d] < c.domain.lo[d] || p[d] > c.domain.hi[d]))
+            t.fail(key, fmt::format("({:.4g}, {:.4g}, {:.4g}) m lies outside the domain ({:.4g}, "
+                                    "{:.4g}, {:.4g}) to ({:.4g}, {:.4g}, {:.4g}) m",
+                                    p.x, p.y, p.z, c.domain.lo.x, c.domain.lo.y, c.domain.lo.z,
+                                    c.domain.hi.x, c.domain.hi.y, c.domain.hi.z));
+}
+
 ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
     ProbeSpec p;
-    p.name = t.string("name");
+    p.origin = t.origin();
+    p.name = t.name("name");
     p.type = t.choice("type", {"pressure", "gauge", "velocity", "front", "wall_force", "section",
                                "kinetic_energy", "runup", "mass_flux", "body", "discharge",
                                "trapping", "deposit", "flow_section", "fluid_runup", "pressure_map",
@@ -181,8 +198,7 @@ ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
         if (!(norm(p.normal) > 0)) t.fail("normal", "must be a non-zero vector");
         const std::string axis = t.choice("axis", {"x", "y", "z"}, "z");
         p.axis = axis == "x" ? 0 : axis == "y" ? 1 : 2;
-        p.panels_u = int(t.integer("bins", 5));
-        if (p.panels_u < 1 || p.panels_u > 100) t.fail("bins", "must be within 1..100");
+        p.panels_u = int(t.integer("bins", 5, 1, 100));
     } else if (p.type == "fem_displacement") {
         if (!c.has_fem()) t.fail("type", "a fem_displacement probe needs a [[solid]]");
         if (t.has("set")) {
@@ -201,8 +217,19 @@ ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
         if (std::none_of(c.rigid.bodies.begin(), c.rigid.bodies.end(),
                          [&](const auto& b) { return b.name == p.body; }))
             t.fail("body", "no [[body]] named \"" + p.body + "\"");
-    } else if (p.type == "pressure" || p.type == "velocity" || p.type == "gauge") {
+    } else if (p.type == "gauge") {
+        // A gauge stands at a plan position: (x, y) in 3D, (x) in 2D; a vertical coordinate,
+        // if given, is ignored (the gauge scans the whole height of the domain).
+        const auto v = t.reals("position");
+        const std::size_t plan = c.dim == 3 ? 2 : 1;
+        if (v.size() != plan && v.size() != plan + 1)
+            t.fail("position", c.dim == 3 ? "expected [x, y] (or [x, y, z], z ignored)"
+                                          : "expected [x] (or [x, z], z ignored)");
+        p.position = c.dim == 3 ? Vec3{v[0], v[1], c.domain.lo.z} : Vec3{v[0], 0, c.domain.lo.z};
+        require_in_domain(t, "position", p.position, c);
+    } else if (p.type == "pressure" || p.type == "velocity") {
         p.position = t.vec3("position", c.dim);
+        require_in_domain(t, "position", p.position, c);
     } else if (p.type == "section" || p.type == "kinetic_energy") {
         p.min = t.vec3("min", c.dim);
         p.max = t.vec3("max", c.dim);
@@ -294,6 +321,11 @@ CaseSpec read_case(const std::string& path, const std::vector<std::string>& over
     CaseSpec c;
     c.file = path;
     toml::table doc;
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw InputError(path + ": is a folder, not a case file (give the .toml file)");
+    if (std::filesystem::exists(path, ec) && std::filesystem::file_size(path, ec) > (64u << 20))
+        throw InputError(path + ": larger than 64 MiB; a case file is a few kilobytes of TOML");
     try {
         doc = toml::parse_file(path);
     } catch (const toml::parse_error& e) {
@@ -308,19 +340,20 @@ CaseSpec read_case(const std::string& path, const std::vector<std::string>& over
     c.resolved_toml = resolved.str();
 
     ConfigTable root(doc, path, "");
-    c.name = root.string("name", std::filesystem::path(path).stem().string());
-    c.dim = int(root.integer("dimensions", 2));
-    if (c.dim != 2 && c.dim != 3) root.fail("dimensions", "must be 2 or 3");
+    c.origin = root.origin();
+    c.name = root.has("name") ? root.name("name")
+                              : file_safe_name(std::filesystem::path(path).stem().string());
+    c.dim = int(root.integer("dimensions", 2, 2, 3));
     // dp is the fluid particle spacing; a grains-only case may omit it.
     const bool fluid_input = !root.tables("fluid").empty() || !root.tables("inlet").empty();
     c.dp = fluid_input ? root.positive("dp") : root.real("dp", 0);
 
     auto time = root.table("time");
     if (!time) root.fail("time", "missing required table [time] with key 'end'");
+    c.time_origin = time->origin();
     c.t_end = time->positive("end");
     c.scheme = time->choice("scheme", {"symplectic", "verlet"}, "symplectic");
-    c.verlet_euler_every = int(time->integer("verlet_euler_every", 40));
-    if (c.verlet_euler_every < 1) time->fail("verlet_euler_every", "must be >= 1");
+    c.verlet_euler_every = int(time->integer("verlet_euler_every", 40, 1, 1000000));
     time->finish();
 
     auto output = root.table("output");
@@ -344,12 +377,14 @@ CaseSpec read_case(const std::string& path, const std::vector<std::string>& over
 
     auto domain = root.table("domain");
     if (!domain) root.fail("domain", "missing required table [domain] with min and max");
+    c.domain_origin = domain->origin();
     c.domain = read_domain(*domain, c.dim);
 
     auto fluid_tables = root.tables("fluid");
     auto sph = root.table("sph");
     if (fluid_input) {
         if (!sph) root.fail("sph", "missing table [sph] (the case has [[fluid]] or [[inlet]])");
+        c.sph_origin = sph->origin();
         read_sph(*sph, c);
     } else if (sph) {
         sph->fail("c0", "[sph] given but the case has no [[fluid]]");
@@ -358,7 +393,8 @@ CaseSpec read_case(const std::string& path, const std::vector<std::string>& over
 
     for (const auto& t : fluid_tables) {
         FluidSpec f;
-        f.name = t.string("name");
+        f.origin = t.origin();
+        f.name = t.name("name");
         f.shape = read_shape(t, c.dim, {"box", "cylinder", "stl"});
         f.velocity = t.vec3("velocity", c.dim, {});
         f.hydrostatic = t.boolean("hydrostatic", true);
@@ -377,7 +413,8 @@ CaseSpec read_case(const std::string& path, const std::vector<std::string>& over
     const Real support = 2 * c.sph.h;
     for (const auto& t : root.tables("wall")) {
         WallSpec w;
-        w.name = t.string("name");
+        w.origin = t.origin();
+        w.name = t.name("name");
         for (const auto& o : c.walls)
             if (o.name == w.name) t.fail("name", "two walls are named \"" + w.name + "\"");
         w.type = t.choice("shape", {"box", "open_tank", "channel", "plane", "stl"});
@@ -393,8 +430,8 @@ CaseSpec read_case(const std::string& path, const std::vector<std::string>& over
             w.shape = read_shape(t, c.dim, {"box", "open_tank", "channel", "stl"});
         }
         if (!c.fluids.empty()) {
-            w.layers = int(t.integer("layers", long(std::ceil(support / c.dp - 1e-9))));
-            if (w.layers < 1) t.fail("layers", "must be >= 1");
+            w.layers = int(t.integer("layers", long(std::ceil(support / c.dp - 1e-9)), 1,
+                                     max_boundary_layers));
         }
         if (c.has_dem || c.has_bodies()) {
             w.material = t.string("material", "");

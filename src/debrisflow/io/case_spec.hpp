@@ -4,6 +4,7 @@
 #include "debrisflow/fem/fem_material.hpp"
 #include "debrisflow/fem/fem_mesh.hpp"
 #include "debrisflow/fem/fem_params.hpp"
+#include "debrisflow/io/origin.hpp"
 #include "debrisflow/sph/sph_params.hpp"
 #include "debrisflow/sph/sph_solver.hpp"
 #include <array>
@@ -30,6 +31,7 @@ struct FluidSpec {
     ShapeSpec shape;
     Vec3 velocity;
     bool hydrostatic = true;
+    Origin origin; // where the block is in the case file
 };
 
 // Fixed boundary built from dynamic boundary particles. Types: "box" (solid block),
@@ -48,6 +50,7 @@ struct WallSpec {
     std::vector<std::array<Vec3, 2>> boxes;
     std::string structure; // the [[structure]] type that produced it ("" for [[wall]])
     Real slit_density = 0; // slit dams: sum of openings / dam width
+    Origin origin; // where the block is in the case file
 };
 
 // Grain sizes: "mono" (diameter), "lognormal" (median d50, log-standard deviation sigma) or
@@ -71,6 +74,7 @@ struct GrainsSpec {
     Vec3 position, velocity, angular_velocity;
     unsigned seed = 1;
     std::string file;
+    Origin origin; // where the block is in the case file
 };
 
 // Solid feed (a hopper outlet or an insertion region): grains of `size` released at random
@@ -90,6 +94,7 @@ struct FeedSpec {
     std::vector<std::string> rocks; // STL files (resolved paths); empty: a grain feed
     Real sphericity_tolerance = Real(0.15);
     int layers = 0; // SPH boundary layers of each rock (0: automatic)
+    Origin origin; // where the block is in the case file
 };
 
 struct DemSpec {
@@ -126,6 +131,7 @@ struct BodySpec {
     std::optional<Vec3> track_point; // a named point reported by the body probe (world, t=0)
     Real contact_radius = 0;         // Hertz curvature radius at vertices [m] (0: automatic)
     int layers = 0;                  // SPH boundary layers sampled inside the surface
+    Origin origin; // where the block is in the case file
 };
 
 // A constraint between two bodies, or a body and the ground (body_b empty): hinge (revolute
@@ -169,6 +175,7 @@ struct ProbeSpec {
     // probe for the Hertz boulder load with the load-reduction factor K_c (Kwan 2012).
     std::string approach, boulder;
     Real width = 0, rho = 0, k_c = 0.1;
+    Origin origin; // where the block is in the case file
 };
 
 // Fluid entering through the downstream face of a buffer box (`min`-`max`) along `axis`
@@ -181,6 +188,7 @@ struct InletSpec {
     std::vector<Real> times, discharge;
     Real every = 0.01; // sampling interval of its CSV [s]
     std::size_t fluid = 0;
+    Origin origin; // where the block is in the case file
 };
 
 // Sink: fluid particles and grains inside the box `min`-`max` are removed and counted.
@@ -188,6 +196,7 @@ struct OutletSpec {
     std::string name;
     Vec3 min, max;
     Real every = 0.01;
+    Origin origin; // where the block is in the case file
 };
 
 // A deformable solid (explicit FEM): a built-in mesh ("box": min, max, divisions; "trapezoid":
@@ -200,6 +209,7 @@ struct FemSolidSpec {
     std::array<int, 3> divisions{4, 4, 4};
     fem::TrapezoidSpec trapezoid;
     std::vector<std::string> fixed;
+    Origin origin; // where the block is in the case file
 };
 
 // A named node set: the nodes of `solid` inside the box min-max.
@@ -251,6 +261,8 @@ struct CaseSpec {
     std::vector<InletSpec> inlets;
     std::vector<OutletSpec> outlets;
     std::string resolved_toml; // the case after --set overrides, for the output folder
+    // Where the top level and the [time], [domain], [sph] and [dem] tables are in the file.
+    Origin origin, time_origin, domain_origin, sph_origin, dem_origin;
 };
 
 // Reads and validates a case file; `overrides` are "key=value" strings from --set.

@@ -1,6 +1,7 @@
 #include "debrisflow/io/config_table.hpp"
 #include "debrisflow/core/error.hpp"
 #include <algorithm>
+#include <cmath>
 #include <fmt/format.h>
 
 namespace debrisflow::io {
@@ -53,6 +54,18 @@ std::string ConfigTable::where(const std::string& key) const {
     return fmt::format("{}:{}:{}: key '{}'", file_, src.begin.line, src.begin.column, full);
 }
 
+Origin ConfigTable::origin() const {
+    Origin o;
+    o.file_ = file_;
+    o.prefix_ = prefix_;
+    const auto& src = table_->source();
+    o.block_ = {long(src.begin.line), long(src.begin.column)};
+    for (const auto& [k, v] : *table_)
+        o.keys_[std::string(k.str())] = {long(v.source().begin.line),
+                                         long(v.source().begin.column)};
+    return o;
+}
+
 void ConfigTable::fail(const std::string& key, const std::string& message) const {
     throw InputError(fmt::format("{}: {}", where(key), message));
 }
@@ -79,7 +92,10 @@ const toml::node& ConfigTable::require(const std::string& key) const {
 
 Real ConfigTable::real(const std::string& key) const {
     const toml::node& n = require(key);
-    if (auto v = n.value_exact<double>()) return Real(*v);
+    if (auto v = n.value_exact<double>()) {
+        if (!std::isfinite(*v)) fail(key, fmt::format("must be a finite number, got {}", *v));
+        return Real(*v);
+    }
     if (auto v = n.value_exact<std::int64_t>()) return Real(*v);
     fail(key, "expected a number, found " + type_name(n));
 }
@@ -105,6 +121,12 @@ long ConfigTable::integer(const std::string& key, long fallback) const {
     fail(key, "expected an integer, found " + type_name(*n));
 }
 
+long ConfigTable::integer(const std::string& key, long fallback, long lo, long hi) const {
+    const long v = integer(key, fallback);
+    if (v < lo || v > hi) fail(key, fmt::format("must be within {}..{}, got {}", lo, hi, v));
+    return v;
+}
+
 bool ConfigTable::boolean(const std::string& key, bool fallback) const {
     const toml::node* n = node(key);
     if (!n) return fallback;
@@ -120,6 +142,39 @@ std::string ConfigTable::string(const std::string& key) const {
 
 std::string ConfigTable::string(const std::string& key, const std::string& fallback) const {
     return has(key) ? string(key) : (used_->insert(key), fallback);
+}
+
+namespace {
+bool name_char(char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+           c == '_' || c == '-' || c == '.';
+}
+constexpr std::size_t max_name_length = 64;
+} // namespace
+
+std::string ConfigTable::name(const std::string& key) const {
+    const std::string v = string(key);
+    if (v.empty() || v.size() > max_name_length)
+        fail(key, fmt::format("a name needs 1 to {} characters, got {}", max_name_length,
+                              v.size()));
+    if (v.front() == '.') fail(key, "a name must not start with '.'");
+    for (const char c : v)
+        if (!name_char(c))
+            fail(key, fmt::format("a name may hold letters, digits, '_', '-' and '.' only (it "
+                                  "becomes a file name); found byte 0x{:02x}",
+                                  unsigned(static_cast<unsigned char>(c))));
+    return v;
+}
+
+std::string file_safe_name(const std::string& text) {
+    std::string out;
+    for (const char c : text) {
+        if (out.size() == max_name_length) break;
+        out += name_char(c) ? c : '_';
+    }
+    if (out.empty()) return "case";
+    if (out.front() == '.') out.front() = '_';
+    return out;
 }
 
 std::string ConfigTable::choice(const std::string& key, const std::vector<std::string>& names,
@@ -148,6 +203,8 @@ std::vector<Real> ConfigTable::reals(const std::string& key) const {
     for (const auto& e : *arr) {
         const auto v = number(e);
         if (!v) fail(key, "expected an array of numbers, found an element that is " + type_name(e));
+        if (!std::isfinite(*v))
+            fail(key, fmt::format("every element must be a finite number, got {}", *v));
         out.push_back(*v);
     }
     return out;
@@ -166,6 +223,8 @@ std::vector<std::vector<Real>> ConfigTable::rows(const std::string& key, std::si
         for (const auto& e : *r) {
             const auto v = number(e);
             if (!v) fail(key, expect + "; found an element that is " + type_name(e));
+            if (!std::isfinite(*v))
+                fail(key, fmt::format("every element must be a finite number, got {}", *v));
             vals.push_back(*v);
         }
         out.push_back(vals);

@@ -1,5 +1,6 @@
 #pragma once
 #include "debrisflow/core/vec3_k.hpp"
+#include "debrisflow/io/origin.hpp"
 #include <memory>
 #include <optional>
 #include <set>
@@ -9,9 +10,14 @@
 
 namespace debrisflow::io {
 
+// Upper bound of a boundary's particle layers: the kernel support (2h <= 8 dp) needs at most 8;
+// more add nothing but memory.
+inline constexpr long max_boundary_layers = 32;
+
 // A TOML table being read into a spec. Every read marks the key as used; finish() rejects
 // keys that were never read (typos) with a suggestion. Errors name file:line:column and the
-// full dotted key, and are thrown as InputError.
+// full dotted key, and are thrown as InputError. Every number read (alone, in an array or in
+// table rows) must be finite: NaN and infinity are rejected where they are read.
 class ConfigTable {
 public:
     ConfigTable(const toml::table& table, std::string file, std::string prefix);
@@ -22,9 +28,14 @@ public:
     Real positive(const std::string& key) const;
     Real positive(const std::string& key, Real fallback) const;
     long integer(const std::string& key, long fallback) const;
+    // An integer within [lo, hi] (bounds that keep sizes and loops finite).
+    long integer(const std::string& key, long fallback, long lo, long hi) const;
     bool boolean(const std::string& key, bool fallback) const;
     std::string string(const std::string& key) const;
     std::string string(const std::string& key, const std::string& fallback) const;
+    // A name (of the case, a block, a probe): 1 to 64 letters, digits, '_', '-' or '.', not
+    // starting with '.'; names become file names (probes/<name>.csv, out/<case name>).
+    std::string name(const std::string& key) const;
     // A choice among `names` (model names, shape types ...).
     std::string choice(const std::string& key, const std::vector<std::string>& names,
                        const std::string& fallback = "") const;
@@ -43,6 +54,8 @@ public:
     // Errors on any key that no reader asked for.
     void finish() const;
     std::string where(const std::string& key) const;
+    // The positions of this table and of every key it holds, for checks made after reading.
+    Origin origin() const;
     const std::string& file() const { return file_; }
 
 private:
@@ -56,5 +69,8 @@ private:
 // Applies `--set a.b.c=value` to a parsed document (value parsed as TOML; a bare word that is
 // not valid TOML is taken as a string). Array elements are addressed by index: probe.0.every.
 void apply_override(toml::table& doc, const std::string& assignment);
+
+// `text` made into a name as name() accepts it: other characters become '_', cut to 64.
+std::string file_safe_name(const std::string& text);
 
 } // namespace debrisflow::io

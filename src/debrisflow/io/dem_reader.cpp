@@ -3,6 +3,7 @@
 #include "debrisflow/dem/contact_laws_k.hpp"
 #include <algorithm>
 #include <filesystem>
+#include <limits>
 #include <fmt/format.h>
 
 namespace debrisflow::io {
@@ -11,7 +12,7 @@ namespace {
 
 dem::Material read_material(const ConfigTable& t) {
     dem::Material m;
-    m.name = t.string("name");
+    m.name = t.name("name");
     m.law = t.choice("law", dem::ContactLawRegistry::names(), "linear");
     m.rigid = t.boolean("rigid", false);
     m.density = t.has("density") || !m.rigid ? t.positive("density", 2650) : 0;
@@ -30,6 +31,10 @@ dem::Material read_material(const ConfigTable& t) {
                "2017); give a pair with another material its restitution in a [[contact]]");
     m.restitution = t.real("restitution", 0.5);
     if (!(m.restitution > 0 && m.restitution <= 1)) t.fail("restitution", "must be within (0, 1]");
+    if (m.law == "hertz_mindlin" && m.restitution < dem::hertz_min_restitution)
+        t.fail("restitution", fmt::format("must be within [{}, 1] for the hertz_mindlin law (the "
+                                          "Tsuji damping of a lower one is overdamped)",
+                                          dem::hertz_min_restitution));
     m.friction = t.real("friction", 0.5);
     if (m.friction < 0) t.fail("friction", "must be >= 0");
     m.rolling_friction = t.real("rolling_friction", 0);
@@ -56,12 +61,37 @@ dem::PairOverride read_contact(const ConfigTable& t, const std::vector<dem::Mate
         o.restitution = t.real("restitution");
         if (!(*o.restitution > 0 && *o.restitution <= 1))
             t.fail("restitution", "must be within (0, 1]");
+        const std::string law =
+            o.law ? *o.law
+                  : std::find_if(mats.begin(), mats.end(), [&](const auto& m) {
+                        return m.name == o.a;
+                    })->law;
+        if (law == "hertz_mindlin" && *o.restitution < dem::hertz_min_restitution)
+            t.fail("restitution", fmt::format("must be within [{}, 1] for the hertz_mindlin law",
+                                              dem::hertz_min_restitution));
     }
+    for (const char* key : {"friction", "rolling_friction", "damping_cn"})
+        if (t.has(key) && t.real(key) < 0) t.fail(key, "must be >= 0 (as on a [[material]])");
     if (t.has("friction")) o.friction = t.real("friction");
     if (t.has("rolling_friction")) o.rolling_friction = t.real("rolling_friction");
     if (t.has("damping_cn")) o.damping_cn = t.real("damping_cn");
     t.finish();
     return o;
+}
+
+// Grain sizes of debris flows run from silt (1e-6 m) to boulders; a grain must fit in the
+// domain's smallest extent.
+void check_size_range(const ConfigTable& t, const SizeSpec& s, const CaseSpec& c) {
+    const std::string key = t.has("diameter") ? "diameter" : "size";
+    if (s.min < 1e-6)
+        t.fail(key, fmt::format("the smallest grain ({:.3g} m) is below 1e-6 m", s.min));
+    Real extent = std::numeric_limits<Real>::max();
+    for (int d = 0; d < 3; ++d)
+        if (!(c.dim == 2 && d == 1)) extent = std::min(extent, c.domain.hi[d] - c.domain.lo[d]);
+    if (!(s.max < extent))
+        t.fail(key, fmt::format("the largest grain ({:.4g} m) does not fit in the domain, whose "
+                                "smallest extent is {:.4g} m",
+                                s.max, extent));
 }
 
 SizeSpec read_size(const ConfigTable& t) {
@@ -106,7 +136,8 @@ SizeSpec read_size(const ConfigTable& t) {
 
 GrainsSpec read_grains(const ConfigTable& t, const CaseSpec& c) {
     GrainsSpec g;
-    g.name = t.string("name");
+    g.origin = t.origin();
+    g.name = t.name("name");
     g.material = t.string("material");
     const auto& mats = c.dem.materials;
     if (std::none_of(mats.begin(), mats.end(), [&](const auto& m) { return m.name == g.material; }))
@@ -120,6 +151,7 @@ GrainsSpec read_grains(const ConfigTable& t, const CaseSpec& c) {
         return g;
     }
     g.size = read_size(t);
+    check_size_range(t, g.size, c);
     if (g.packing == "single") {
         g.position = t.vec3("position", c.dim);
     } else {
@@ -130,12 +162,11 @@ GrainsSpec read_grains(const ConfigTable& t, const CaseSpec& c) {
         if (g.packing == "random") {
             if (t.has("count") == t.has("mass")) t.fail("count", "give either count or mass");
             if (t.has("count")) {
-                g.count = t.integer("count", 0);
-                if (g.count < 1) t.fail("count", "must be >= 1");
+                g.count = t.integer("count", 0, 1, 2000000000);
             } else {
                 g.mass = t.positive("mass");
             }
-            g.seed = unsigned(t.integer("seed", 1));
+            g.seed = unsigned(t.integer("seed", 1, 0, 4294967295L));
         } else {
             g.gap = t.real("gap", 0.001);
             if (g.gap < 0) t.fail("gap", "must be >= 0");
@@ -148,12 +179,14 @@ GrainsSpec read_grains(const ConfigTable& t, const CaseSpec& c) {
 
 FeedSpec read_feed(const ConfigTable& t, const CaseSpec& c) {
     FeedSpec f;
-    f.name = t.string("name");
+    f.origin = t.origin();
+    f.name = t.name("name");
     f.material = t.string("material");
     const auto& mats = c.dem.materials;
     if (std::none_of(mats.begin(), mats.end(), [&](const auto& m) { return m.name == f.material; }))
         t.fail("material", "no [[material]] named \"" + f.material + "\"");
     f.size = read_size(t);
+    check_size_range(t, f.size, c);
     f.min = t.vec3("min", c.dim);
     f.max = t.vec3("max", c.dim);
     for (int k = 0; k < 3; ++k)
@@ -174,7 +207,7 @@ FeedSpec read_feed(const ConfigTable& t, const CaseSpec& c) {
     for (Real q : f.discharge)
         if (q < 0) t.fail("discharge", "must be >= 0 [m^3/s of solid] (2D: m^2/s)");
     f.velocity = t.vec3("velocity", c.dim, {});
-    f.seed = unsigned(t.integer("seed", 1));
+    f.seed = unsigned(t.integer("seed", 1, 0, 4294967295L));
     f.every = t.positive("every", 0.01);
     if (t.has("rocks")) {
         if (c.dim == 2) t.fail("rocks", "rock feeds (STL shapes) need dimensions = 3");
@@ -188,8 +221,7 @@ FeedSpec read_feed(const ConfigTable& t, const CaseSpec& c) {
         f.sphericity_tolerance = t.real("sphericity_tolerance", Real(0.15));
         if (!(f.sphericity_tolerance >= 0 && f.sphericity_tolerance < 1))
             t.fail("sphericity_tolerance", "must be in [0, 1) (0.15: +-15 %)");
-        f.layers = int(t.integer("layers", 0));
-        if (f.layers < 0) t.fail("layers", "must be >= 0");
+        f.layers = int(t.integer("layers", 0, 0, max_boundary_layers));
     }
     t.finish();
     return f;
@@ -260,6 +292,7 @@ void read_dem(const ConfigTable& root, CaseSpec& c) {
         return;
     }
     if (!c.has_dem) t->fail("dt", "[dem] given but no [[grains]] or [[feed]]");
+    c.dem_origin = t->origin();
     if (t->has("dt")) p.dt = t->positive("dt");
     p.safety = t->positive("safety", 0.02);
     if (p.safety > 0.3) t->fail("safety", "must be <= 0.3 (fraction of the contact time)");

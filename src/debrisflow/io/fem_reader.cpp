@@ -9,7 +9,7 @@ namespace {
 
 fem::FemMaterial read_fem_material(const ConfigTable& t) {
     fem::FemMaterial m;
-    m.name = t.string("name");
+    m.name = t.name("name");
     m.model = t.choice("model", {"linear_elastic", "mazars"}, "linear_elastic");
     m.density = t.positive("density");
     m.youngs_modulus = t.positive("youngs_modulus");
@@ -33,14 +33,16 @@ std::array<int, 3> read_divisions(const ConfigTable& t, int dim) {
         t.fail("divisions", fmt::format("needs {} integers (elements along {})", dim,
                                         dim == 3 ? "x, y, z" : "x, z"));
     for (Real v : d)
-        if (!(v >= 1) || v != std::floor(v)) t.fail("divisions", "must be integers >= 1");
+        if (!(v >= 1) || v != std::floor(v) || v > 100000)
+            t.fail("divisions", "must be integers within 1..100000");
     return dim == 3 ? std::array<int, 3>{int(d[0]), int(d[1]), int(d[2])}
                     : std::array<int, 3>{int(d[0]), 1, int(d[1])};
 }
 
 FemSolidSpec read_solid(const ConfigTable& t, const CaseSpec& c) {
     FemSolidSpec s;
-    s.name = t.string("name");
+    s.origin = t.origin();
+    s.name = t.name("name");
     s.material = t.string("material");
     const auto& mats = c.fem.materials;
     if (std::none_of(mats.begin(), mats.end(), [&](const auto& m) { return m.name == s.material; }))
@@ -104,7 +106,7 @@ void read_fem(const ConfigTable& root, CaseSpec& c, Vec3 gravity) {
     };
     for (const auto& t : root.tables("node_set")) {
         FemNodeSetSpec n;
-        n.name = t.string("name");
+        n.name = t.name("name");
         n.solid = t.string("solid");
         if (!solid_exists(n.solid)) t.fail("solid", "no [[solid]] named \"" + n.solid + "\"");
         n.min = t.vec3("min", c.dim);
@@ -143,10 +145,8 @@ void read_fem(const ConfigTable& root, CaseSpec& c, Vec3 gravity) {
     p.beta = t->real("damping_beta", 0);
     if (p.alpha < 0) t->fail("damping_alpha", "must be >= 0 [1/s]");
     if (p.beta < 0) t->fail("damping_beta", "must be >= 0 [s]");
-    p.max_subcycles = int(t->integer("max_subcycles", 0));
-    c.fem.layers = int(t->integer("layers", 0));
-    if (c.fem.layers < 0) t->fail("layers", "must be >= 0 (0: ceil(2h/dp))");
-    if (p.max_subcycles < 0) t->fail("max_subcycles", "must be >= 0 (0: no limit)");
+    p.max_subcycles = int(t->integer("max_subcycles", 0, 0, 100000000)); // 0: no limit
+    c.fem.layers = int(t->integer("layers", 0, 0, max_boundary_layers)); // 0: ceil(2h/dp)
     t->finish();
 }
 

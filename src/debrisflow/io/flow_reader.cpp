@@ -26,7 +26,8 @@ Real inlet_area(const InletSpec& in, int dim) {
 void read_inlets(const ConfigTable& root, CaseSpec& c) {
     for (const auto& t : root.tables("inlet")) {
         InletSpec in;
-        in.name = t.string("name");
+        in.origin = t.origin();
+        in.name = t.name("name");
         read_box(t, c.dim, in.min, in.max);
         const std::string dir = t.choice("direction", {"+x", "-x", "+y", "-y", "+z", "-z"}, "+x");
         in.sign = dir[0] == '+' ? 1 : -1;
@@ -54,6 +55,7 @@ void read_inlets(const ConfigTable& root, CaseSpec& c) {
         in.every = t.positive("every", 0.01);
         t.finish();
         FluidSpec f;
+        f.origin = t.origin();
         f.velocity[in.axis] = in.sign * in.discharge.front() / inlet_area(in, c.dim);
         f.name = in.name;
         f.shape.type = "box";
@@ -69,7 +71,8 @@ void read_inlets(const ConfigTable& root, CaseSpec& c) {
 void read_outlets(const ConfigTable& root, CaseSpec& c) {
     for (const auto& t : root.tables("outlet")) {
         OutletSpec out;
-        out.name = t.string("name");
+        out.origin = t.origin();
+        out.name = t.name("name");
         read_box(t, c.dim, out.min, out.max);
         if (c.dim == 2) out.min.y = -1, out.max.y = 1;
         out.every = t.positive("every", 0.01);

@@ -24,7 +24,8 @@ Vec3 row_vec(const std::vector<Real>& r) {
 
 BodySpec read_body(const ConfigTable& t, const CaseSpec& c) {
     BodySpec b;
-    b.name = t.string("name");
+    b.origin = t.origin();
+    b.name = t.name("name");
     b.material = t.string("material");
     const auto& mats = c.dem.materials;
     auto mat =
@@ -84,8 +85,8 @@ BodySpec read_body(const ConfigTable& t, const CaseSpec& c) {
     b.contact_radius = t.real("contact_radius", 0);
     if (b.contact_radius < 0) t.fail("contact_radius", "must be >= 0");
     if (!c.fluids.empty()) {
-        b.layers = int(t.integer("layers", long(std::ceil(2 * c.sph.h / c.dp - 1e-9))));
-        if (b.layers < 1) t.fail("layers", "must be >= 1");
+        b.layers = int(t.integer("layers", long(std::ceil(2 * c.sph.h / c.dp - 1e-9)), 1,
+                                 max_boundary_layers));
     }
     t.finish();
     return b;
@@ -93,7 +94,7 @@ BodySpec read_body(const ConfigTable& t, const CaseSpec& c) {
 
 JointSpec read_joint(const ConfigTable& t, const CaseSpec& c) {
     JointSpec j;
-    j.name = t.string("name");
+    j.name = t.name("name");
     j.type = t.choice("type", {"hinge", "ball", "fixed", "spring"});
     const auto bodies = t.strings("bodies");
     if (bodies.empty() || bodies.size() > 2)
@@ -153,8 +154,7 @@ void read_rigid(const ConfigTable& root, CaseSpec& c) {
     else if (t->has("dt"))
         c.rigid.dt = t->positive("dt");
     c.rigid.contact_spacing = t->positive("contact_spacing", c.dp > 0 ? c.dp : 0);
-    c.rigid.joint_iterations = int(t->integer("joint_iterations", 30));
-    if (c.rigid.joint_iterations < 1) t->fail("joint_iterations", "must be >= 1");
+    c.rigid.joint_iterations = int(t->integer("joint_iterations", 30, 1, 100000));
     c.rigid.joint_stabilization = t->real("joint_stabilization", 0.2);
     if (c.rigid.joint_stabilization < 0 || c.rigid.joint_stabilization > 1)
         t->fail("joint_stabilization", "must be within [0, 1]");

@@ -73,7 +73,7 @@ std::vector<Box> slit_dam(const ConfigTable& t, const CaseSpec& c, Real& density
     const Real th = t.positive("thickness"), H = t.positive("height");
     const Real W = t.positive("width"), s = t.positive("slit_width");
     const long N = t.integer("slits", 0);
-    if (N < 1) t.fail("slits", "required, >= 1");
+    if (N < 1 || N > 10000) t.fail("slits", "required, within 1..10000");
     const Real post = (W - N * s) / Real(N + 1);
     if (!(post > 0))
         t.fail("slit_width", fmt::format("{} slits of {} m do not fit in {} m", N, s, W));
@@ -105,8 +105,8 @@ std::vector<Box> slit_dam(const ConfigTable& t, const CaseSpec& c, Real& density
 std::vector<Box> baffles(const ConfigTable& t, const CaseSpec& c) {
     const Real x0 = t.real("position"), bed = t.real("bed", 0);
     const long rows = t.integer("rows", 0), per_row = t.integer("per_row", 0);
-    if (rows < 1) t.fail("rows", "required, >= 1");
-    if (per_row < 1) t.fail("per_row", "required, >= 1");
+    if (rows < 1 || rows > 10000) t.fail("rows", "required, within 1..10000");
+    if (per_row < 1 || per_row > 10000) t.fail("per_row", "required, within 1..10000");
     const Real dx = rows > 1 ? t.positive("row_spacing") : t.real("row_spacing", 0);
     const Vec3 size = t.vec3("size", 3);
     if (!(size.x > 0 && size.z > 0 && (c.dim == 2 || size.y > 0)))
@@ -172,7 +172,8 @@ void read_structures(const ConfigTable& root, CaseSpec& c) {
     const bool fluid = !c.fluids.empty();
     for (const auto& t : root.tables("structure")) {
         WallSpec w;
-        w.name = t.string("name");
+        w.origin = t.origin();
+        w.name = t.name("name");
         for (const auto& o : c.walls)
             if (o.name == w.name)
                 t.fail("name", "a wall or structure is already named \"" + w.name + "\"");
@@ -180,8 +181,8 @@ void read_structures(const ConfigTable& root, CaseSpec& c) {
         w.structure =
             t.choice("type", {"flume", "check_dam", "slit_dam", "baffles", "gate", "hopper"});
         if (fluid) {
-            w.layers = int(t.integer("layers", long(std::ceil(support / c.dp - 1e-9))));
-            if (w.layers < 1) t.fail("layers", "must be >= 1");
+            w.layers = int(t.integer("layers", long(std::ceil(support / c.dp - 1e-9)), 1,
+                                     max_boundary_layers));
         }
         // Plate thickness of flume beds, side walls and hoppers: covers the kernel support
         // (fluid) or 5 % of the structure scale for grains only.

@@ -6,6 +6,21 @@
 namespace debrisflow::neighbors {
 
 void CellGrid::configure(Vec3 lo, Vec3 hi, Real radius, int dim, std::array<bool, 3> periodic) {
+    // Cells larger than the search radius find the same pairs (more candidates per cell), so
+    // a domain that is huge against the radius gets at most max_cells cells instead of
+    // allocating (or overflowing) one cell per radius.
+    constexpr double max_cells = 1 << 26;
+    double cells = 1;
+    for (int d = 0; d < 3; ++d)
+        if (!(dim == 2 && d == 1))
+            cells *= std::max(1.0, std::floor(double(hi[d] - lo[d]) / radius));
+    if (!std::isfinite(cells))
+        throw InputError("the neighbour grid's extent is not finite; check domain.min/max");
+    const bool any_periodic = periodic[0] || periodic[1] || periodic[2];
+    const Real cell = cells > max_cells && !any_periodic
+                          ? radius * Real(std::pow(cells / max_cells, 1.0 / (dim == 3 ? 3 : 2)) *
+                                          1.001)
+                          : radius;
     view_ = GridView{};
     view_.radius2 = radius * radius;
     for (int d = 0; d < 3; ++d) {
@@ -19,13 +34,16 @@ void CellGrid::configure(Vec3 lo, Vec3 hi, Real radius, int dim, std::array<bool
             view_.periodic[d] = 0;
             continue;
         }
-        nc_[d] = std::max(1, int(std::floor(len / radius)));
+        nc_[d] = int(std::max(1.0, std::min(double(max_cells), std::floor(double(len / cell)))));
         if (periodic[d] && nc_[d] < 3)
             throw InputError("periodic direction " + std::string(1, "xyz"[d]) +
                              " is shorter than three kernel supports; enlarge the domain");
         view_.inv_cell[d] = Real(nc_[d]) / len;
     }
     for (int d = 0; d < 3; ++d) view_.nc[d] = nc_[d];
+    if (double(nc_[0]) * nc_[1] * nc_[2] > 2 * max_cells)
+        throw InputError("a periodic domain needs more than 1.3e8 neighbour cells; enlarge dp "
+                         "or shorten the periodic directions");
     start_.assign(std::size_t(cell_count()) + 1, 0);
 }
 

@@ -197,9 +197,9 @@ UnitProps unit_props(const ShapeField& f, int dim) {
                (a * a.transpose() + b * b.transpose() + c * c.transpose() + sum * sum.transpose());
     }
     if (!(u.volume > 0))
-        throw InputError(fmt::format("body '{}': mesh {} encloses no volume (open mesh or "
+        throw InputError(fmt::format("{}: body '{}': mesh {} encloses no volume (open mesh or "
                                      "inward normals)",
-                                     f.b.name, s.file));
+                                     f.b.origin.at("file"), f.b.name, s.file));
     const Eigen::Vector3d c = first / u.volume;
     u.centroid = vec(c);
     cov -= u.volume * c * c.transpose();
@@ -259,9 +259,11 @@ BuiltBody build_body(const io::BodySpec& b, const io::CaseSpec& c, Real density,
     }
     for (int k = 0; k < 3; ++k)
         if (!(moments[k] > 0))
-            throw InputError(fmt::format("body '{}': inertia tensor is not positive definite "
-                                         "(principal moment {:.4g} kg m^2)",
-                                         b.name, moments[k]));
+            throw InputError(fmt::format("{}: body '{}': inertia tensor is not positive definite "
+                                         "(principal moment {:.4g} kg m^2); check its inertia, "
+                                         "mass and density",
+                                         b.origin.at(b.inertia ? "inertia" : "density"), b.name,
+                                         moments[k]));
     const Eigen::Quaterniond eq(R);
     rigid::BodyState& s = out.state;
     s.pos = com;
@@ -343,7 +345,8 @@ BuiltBody build_body(const io::BodySpec& b, const io::CaseSpec& c, Real density,
     // Shell samples: SPH boundary particles (layers x dp) and distributed-contact spheres.
     auto shell = [&](Real spacing, Real thickness) {
         std::vector<BodySurfacePoint> pts;
-        for (const Vec3& p : lattice(lo, hi, lo, spacing, dim, [](Vec3) { return true; })) {
+        const std::string what = b.origin.block() + ": body '" + b.name + "'";
+        for (const Vec3& p : lattice(lo, hi, lo, spacing, dim, [](Vec3) { return true; }, what)) {
             const auto [d, n] = field.depth(p);
             if (d >= 0 && d < thickness) pts.push_back({p, n, d});
         }
@@ -352,9 +355,9 @@ BuiltBody build_body(const io::BodySpec& b, const io::CaseSpec& c, Real density,
     if (sph_dp > 0) {
         out.sph_points = shell(sph_dp, layers * sph_dp);
         if (out.sph_points.empty())
-            throw InputError(fmt::format("body '{}' is smaller than dp = {} m: no boundary "
+            throw InputError(fmt::format("{}: body '{}' is smaller than dp = {} m: no boundary "
                                          "particles",
-                                         b.name, sph_dp));
+                                         b.origin.block(), b.name, sph_dp));
     }
     const Real spacing = c.rigid.contact_spacing > 0 ? c.rigid.contact_spacing : sph_dp;
     if (!m.spheres.empty()) {

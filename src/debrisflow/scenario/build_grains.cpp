@@ -1,4 +1,5 @@
 #include "debrisflow/scenario/build_grains.hpp"
+#include "debrisflow/scenario/resource_estimate.hpp"
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/dem/box_faces.hpp"
 #include "debrisflow/scenario/size_sampler.hpp"
@@ -126,7 +127,7 @@ void insert_random(const io::CaseSpec& c, const io::GrainsSpec& b, int mat, dem:
                     "{}: grains '{}': random insertion placed {} grains ({:.4g} kg) and found no "
                     "room for more after {} tries; enlarge the region or use packing = "
                     "\"lattice\" and settle",
-                    c.file, b.name, count, mass, max_failures));
+                    b.origin.block(), b.name, count, mass, max_failures));
             continue;
         }
         failures = 0;
@@ -143,6 +144,7 @@ void fill_lattice(const io::CaseSpec& c, const io::GrainsSpec& b, int mat, dem::
     Vec3 lo, hi;
     region.bounds(lo, hi);
     const Real d = b.size.diameter > 0 ? b.size.diameter : b.size.min, s = d * (1 + b.gap);
+    require_lattice_within_budget(lo, hi, s, c.dim, b.origin.block() + ": grains '" + b.name + "'");
     long placed = 0;
     for (Real z = lo.z + d / 2; z <= hi.z - d / 2 + 1e-12; z += s)
         for (Real y = c.dim == 2 ? 0 : lo.y + d / 2; y <= (c.dim == 2 ? 0 : hi.y - d / 2 + 1e-12);
@@ -154,15 +156,16 @@ void fill_lattice(const io::CaseSpec& c, const io::GrainsSpec& b, int mat, dem::
                 ++placed;
             }
     if (placed == 0)
-        throw InputError(c.file + ": grains '" + b.name + "': the region holds no grain of " +
-                         "diameter " + std::to_string(d) + " m");
+        throw InputError(fmt::format("{}: grains '{}': the region holds no grain of diameter {} m",
+                                     b.origin.at("region"), b.name, d));
 }
 
 void read_state(const io::CaseSpec& c, const io::GrainsSpec& b, dem::GrainSet& g) {
     std::filesystem::path p(b.file);
     if (p.is_relative()) p = std::filesystem::path(c.file).parent_path() / p;
     std::ifstream in(p);
-    if (!in) throw InputError(c.file + ": grains '" + b.name + "': cannot read " + p.string());
+    if (!in) throw InputError(b.origin.at("file") + ": grains '" + b.name + "': cannot read " +
+                              p.string());
     std::string line;
     std::getline(in, line);
     long row = 1;
@@ -172,14 +175,23 @@ void read_state(const io::CaseSpec& c, const io::GrainsSpec& b, dem::GrainSet& g
         std::stringstream s(line);
         std::string f[11];
         for (auto& x : f) std::getline(s, x, ',');
+        Real v[10];
         try {
-            Real v[10];
             for (int k = 0; k < 10; ++k) v[k] = std::stod(f[k]);
-            add_grain(c, g, {v[0], v[1], v[2]}, {v[3], v[4], v[5]}, {v[6], v[7], v[8]}, v[9],
-                      material_index(c, f[10]));
-        } catch (const std::invalid_argument&) {
-            throw InputError(fmt::format("{}:{}: malformed grain state row", p.string(), row));
+        } catch (const std::exception&) { // invalid_argument, out_of_range
+            throw InputError(fmt::format("{}:{}: malformed grain state row (10 numbers and a "
+                                         "material name expected)",
+                                         p.string(), row));
         }
+        for (int k = 0; k < 10; ++k)
+            if (!std::isfinite(v[k]))
+                throw InputError(fmt::format("{}:{}: column {} is not a finite number", p.string(),
+                                             row, k + 1));
+        if (!(v[9] >= 1e-6))
+            throw InputError(
+                fmt::format("{}:{}: the diameter {} m is below 1e-6 m", p.string(), row, v[9]));
+        add_grain(c, g, {v[0], v[1], v[2]}, {v[3], v[4], v[5]}, {v[6], v[7], v[8]}, v[9],
+                  material_index(c, f[10]));
     }
 }
 
@@ -207,7 +219,7 @@ void build_grains(const io::CaseSpec& c, dem::GrainSet& g) {
                                    : (d == 1 ? g.pos[std::size_t(i)].y : g.pos[std::size_t(i)].z);
                 if (!(x >= c.domain.lo[d] && x <= c.domain.hi[d]))
                     throw InputError(fmt::format("{}: grains '{}' extend outside the domain in {}",
-                                                 c.file, b.name, "xyz"[d]));
+                                                 b.origin.block(), b.name, "xyz"[d]));
             }
     }
 }

@@ -1,5 +1,6 @@
 #include "debrisflow/scenario/build_particles.hpp"
 #include "debrisflow/core/error.hpp"
+#include "debrisflow/core/memory_budget.hpp"
 #include "debrisflow/models/eos_tait_k.hpp"
 #include "debrisflow/scenario/lattice.hpp"
 #include "debrisflow/scenario/stl_mesh.hpp"
@@ -22,8 +23,9 @@ bool inside_cylinder(const io::ShapeSpec& s, int dim, Vec3 p) {
     return dot(radial, radial) <= s.radius * s.radius;
 }
 
-std::vector<Vec3> fill_shape(const io::ShapeSpec& s, Real dp, int dim) {
-    if (s.type == "box") return lattice(s.min, s.max, s.min, dp, dim, [](Vec3) { return true; });
+std::vector<Vec3> fill_shape(const io::ShapeSpec& s, Real dp, int dim, const std::string& what) {
+    if (s.type == "box")
+        return lattice(s.min, s.max, s.min, dp, dim, [](Vec3) { return true; }, what);
     if (s.type == "cylinder") {
         Vec3 lo, hi;
         for (int d = 0; d < 3; ++d) {
@@ -31,12 +33,13 @@ std::vector<Vec3> fill_shape(const io::ShapeSpec& s, Real dp, int dim) {
             lo[d] = s.center[d] - ext;
             hi[d] = s.center[d] + ext;
         }
-        return lattice(lo, hi, {}, dp, dim, [&](Vec3 p) { return inside_cylinder(s, dim, p); });
+        return lattice(
+            lo, hi, {}, dp, dim, [&](Vec3 p) { return inside_cylinder(s, dim, p); }, what);
     }
     const TriangleMesh mesh = TriangleMesh::read_stl(s.file, s.scale, s.offset);
     Vec3 lo, hi;
     mesh.bounds(lo, hi);
-    return lattice(lo, hi, {}, dp, dim, [&](Vec3 p) { return mesh.contains(p); });
+    return lattice(lo, hi, {}, dp, dim, [&](Vec3 p) { return mesh.contains(p); }, what);
 }
 
 // Surface samples of a mesh with `layers` layers behind it (opposite to the normals).
@@ -47,8 +50,18 @@ struct WallPoint {
     Real d;
 };
 
-std::vector<WallPoint> mesh_wall(const io::ShapeSpec& s, Real dp, int layers) {
+std::vector<WallPoint> mesh_wall(const io::ShapeSpec& s, Real dp, int layers,
+                                 const std::string& what) {
     const TriangleMesh mesh = TriangleMesh::read_stl(s.file, s.scale, s.offset);
+    double samples = 0; // before sampling: the count must fit in memory
+    for (const auto& t : mesh.triangles)
+        samples += (std::ceil(norm(t.b - t.a) / dp) + 1) * (std::ceil(norm(t.c - t.a) / dp) + 1) *
+                   layers;
+    if (!(samples * 64 <= memory_budget_bytes()))
+        throw InputError(fmt::format("{}: sampling {} at dp = {} m needs {:.3g} points, more than "
+                                     "the memory ({}) allows; coarsen dp or scale the mesh",
+                                     what, s.file, dp, samples,
+                                     format_bytes(memory_budget_bytes())));
     std::vector<WallPoint> raw;
     for (const auto& t : mesh.triangles) {
         const Vec3 n = t.normal();
@@ -91,6 +104,28 @@ std::vector<WallPoint> mesh_wall(const io::ShapeSpec& s, Real dp, int layers) {
     return out;
 }
 
+// Every particle of a block must start inside the domain (else the first step would stop the
+// run as unstable): names the block and the first point outside.
+void require_inside_domain(const std::vector<Vec3>& pts, const io::CaseSpec& c,
+                           const std::string& what, const std::string& cause) {
+    std::size_t outside = 0;
+    Vec3 first;
+    for (const Vec3& p : pts)
+        for (int d = 0; d < 3; ++d)
+            if (!(c.dim == 2 && d == 1) && !c.domain.periodic[d] &&
+                (p[d] < c.domain.lo[d] || p[d] > c.domain.hi[d])) {
+                if (outside++ == 0) first = p;
+                break;
+            }
+    if (outside == 0) return;
+    throw InputError(fmt::format(
+        "{}: {} of {} particles lie outside the domain (the first at ({:.4g}, {:.4g}, {:.4g}) m; "
+        "{}); the domain is ({:.4g}, {:.4g}, {:.4g}) to ({:.4g}, {:.4g}, {:.4g}) m: enlarge "
+        "domain.min/domain.max ({}) or move the block",
+        what, outside, pts.size(), first.x, first.y, first.z, cause, c.domain.lo.x, c.domain.lo.y,
+        c.domain.lo.z, c.domain.hi.x, c.domain.hi.y, c.domain.hi.z, c.domain_origin.at("max")));
+}
+
 // Normal into the fluid and depth behind the surface of the wall point p.
 WallPoint wall_point(const io::WallSpec& w, const io::CaseSpec& c, Vec3 p) {
     if (w.type == "plane") return {p, w.normal, -dot(p - w.point, w.normal)};
@@ -131,9 +166,10 @@ WallPoint wall_point(const io::WallSpec& w, const io::CaseSpec& c, Vec3 p) {
 
 std::vector<WallPoint> build_wall(const io::WallSpec& w, const io::CaseSpec& c) {
     const Real dp = c.dp;
+    const std::string what = w.origin.block() + ": wall '" + w.name + "'";
     std::vector<Vec3> pts;
     if (w.type == "open_tank") {
-        pts = tank_walls(w.shape.min, w.shape.max, dp, c.dim, w.layers, false);
+        pts = tank_walls(w.shape.min, w.shape.max, dp, c.dim, w.layers, false, what);
     } else if (w.type == "box" || w.type == "boxes") {
         const Real skin = w.layers * dp;
         const std::vector<std::array<Vec3, 2>> boxes =
@@ -152,26 +188,38 @@ std::vector<WallPoint> build_wall(const io::WallSpec& w, const io::CaseSpec& c) 
         };
         for (std::size_t k = 0; k < boxes.size(); ++k) {
             const Vec3 lo = boxes[k][0], hi = boxes[k][1];
-            auto part = lattice(lo, hi, lo, dp, c.dim, [&](Vec3 p) {
-                Real depth = std::numeric_limits<Real>::max();
-                for (int d = 0; d < 3; ++d) {
-                    if (c.dim == 2 && d == 1) continue;
-                    depth = std::min({depth, p[d] - lo[d], hi[d] - p[d]});
-                }
-                return depth < skin && !inside(p, k);
-            });
+            auto part = lattice(
+                lo, hi, lo, dp, c.dim,
+                [&](Vec3 p) {
+                    Real depth = std::numeric_limits<Real>::max();
+                    for (int d = 0; d < 3; ++d) {
+                        if (c.dim == 2 && d == 1) continue;
+                        depth = std::min({depth, p[d] - lo[d], hi[d] - p[d]});
+                    }
+                    return depth < skin && !inside(p, k);
+                },
+                what);
             pts.insert(pts.end(), part.begin(), part.end());
         }
     } else if (w.type == "plane") {
         const Real thick = w.layers * dp;
-        pts = lattice(c.domain.lo, c.domain.hi, w.point, dp, c.dim, [&](Vec3 p) {
-            const Real s = dot(p - w.point, w.normal);
-            return s < 0 && s >= -thick;
-        });
+        // A plane along an axis: only its slab of the domain is visited (same points).
+        Vec3 lo = c.domain.lo, hi = c.domain.hi;
+        for (int d = 0; d < 3; ++d)
+            if (std::abs(w.normal[d]) == 1) {
+                const Real a = w.point[d], b = w.point[d] - w.normal[d] * (thick + dp);
+                lo[d] = std::max(lo[d], std::min(a, b)), hi[d] = std::min(hi[d], std::max(a, b));
+            }
+        pts = lattice(
+            lo, hi, w.point, dp, c.dim,
+            [&](Vec3 p) {
+                const Real s = dot(p - w.point, w.normal);
+                return s < 0 && s >= -thick;
+            },
+            what);
     } else {
-        if (c.dim == 2)
-            throw InputError(c.file + ": wall '" + w.name + "': STL walls need a 3D case");
-        return mesh_wall(w.shape, dp, w.layers);
+        if (c.dim == 2) throw InputError(w.origin.at("shape") + ": STL walls need a 3D case");
+        return mesh_wall(w.shape, dp, w.layers, what);
     }
     std::vector<WallPoint> out;
     out.reserve(pts.size());
@@ -195,9 +243,13 @@ ParticleId build_particles(const io::CaseSpec& c, particles::ParticleSet& set,
         walls.push_back(build_wall(w, c));
         if (walls.back().empty())
             throw InputError(fmt::format("{}: wall '{}' produced no particles (check its extent "
-                                         "against dp = {} m)",
-                                         c.file, w.name, c.dp));
-        for (const WallPoint& wp : walls.back()) boundary.push_back(wp.p);
+                                         "against dp = {} m and the domain)",
+                                         w.origin.block(), w.name, c.dp));
+        std::vector<Vec3> pts;
+        for (const WallPoint& wp : walls.back()) pts.push_back(wp.p);
+        require_inside_domain(pts, c, w.origin.block() + ": wall '" + w.name + "'",
+                              fmt::format("its {} layers of dp = {} m", w.layers, c.dp));
+        boundary.insert(boundary.end(), pts.begin(), pts.end());
     }
     for (const auto& b : bodies)
         for (const auto& sp : b.sph_points) boundary.push_back(sp.p);
@@ -210,7 +262,9 @@ ParticleId build_particles(const io::CaseSpec& c, particles::ParticleSet& set,
     std::vector<Column> columns;
     for (std::size_t f = 0; f < c.fluids.size(); ++f) {
         const auto& fl = c.fluids[f];
-        auto pts = remove_near(fill_shape(fl.shape, c.dp, c.dim), boundary, Real(0.75) * c.dp);
+        const std::string what = fl.origin.block() + ": fluid '" + fl.name + "'";
+        auto pts = remove_near(fill_shape(fl.shape, c.dp, c.dim, what), boundary,
+                               Real(0.75) * c.dp);
         std::erase_if(pts, [&](Vec3 p) {
             for (const auto& b : bodies)
                 if (b.inside(p)) return true;
@@ -219,7 +273,8 @@ ParticleId build_particles(const io::CaseSpec& c, particles::ParticleSet& set,
         if (pts.empty())
             throw InputError(fmt::format("{}: fluid '{}' produced no particles (shape smaller than "
                                          "dp = {} m, or entirely inside a wall)",
-                                         c.file, fl.name, c.dp));
+                                         fl.origin.block(), fl.name, c.dp));
+        require_inside_domain(pts, c, what, fmt::format("its particles at dp = {} m", c.dp));
         Real top = -std::numeric_limits<Real>::max(); // highest point against gravity
         for (const Vec3& p : pts) top = std::max(top, -dot(p, down));
         top += Real(0.5) * c.dp;

@@ -1,11 +1,13 @@
 #include "debrisflow/scenario/lattice.hpp"
+#include "debrisflow/scenario/resource_estimate.hpp"
 #include <cmath>
 #include <unordered_map>
 
 namespace debrisflow::scenario {
 
 std::vector<Vec3> lattice(Vec3 lo, Vec3 hi, Vec3 origin, Real dp, int dim,
-                          const std::function<bool(Vec3)>& keep) {
+                          const std::function<bool(Vec3)>& keep, const std::string& what) {
+    require_lattice_within_budget(lo, hi, dp, dim, what);
     std::vector<Vec3> out;
     long a[3], b[3];
     for (int d = 0; d < 3; ++d) {
@@ -23,7 +25,11 @@ std::vector<Vec3> lattice(Vec3 lo, Vec3 hi, Vec3 origin, Real dp, int dim,
     return out;
 }
 
-std::vector<Vec3> tank_walls(Vec3 lo, Vec3 hi, Real dp, int dim, int layers, bool closed_top) {
+std::vector<Vec3> tank_walls(Vec3 lo, Vec3 hi, Real dp, int dim, int layers, bool closed_top,
+                             const std::string& what) {
+    const Real skin = layers * dp;
+    require_lattice_within_budget(lo - Vec3{skin, skin, skin}, hi + Vec3{skin, skin, skin}, dp,
+                                  dim, what);
     std::vector<Real> axis[3];
     std::vector<char> is_wall[3];
     for (int d = 0; d < 3; ++d) {
