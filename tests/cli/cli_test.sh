@@ -32,13 +32,31 @@ grep -q "badtype.toml:3:7: key 'time.end': expected a number" "$out/badtype.txt"
 "$exe" check "$out/missing.toml" > /dev/null 2>&1; rc=$?
 [ $rc -eq 2 ] || fail "missing file: exit $rc"
 
-# A domain that ends just above the water: the splash leaves it and the run must stop (exit 3)
-# with a message saying where, keeping summary.json.
-"$exe" run "$demo" --out "$out/unstable" --set domain.max=[1.66,0.33] --set time.end=0.5 --quiet \
+# summary.json is valid JSON.
+/usr/bin/python3 -c "import json,sys; json.load(open(sys.argv[1]))" "$out/run/summary.json" \
+    || fail "summary.json is not valid JSON"
+
+# An output folder that holds a run's results is refused (exit 2) and left as it was; with
+# --overwrite its old frames and probes are removed, so no stale frame stays beside the new
+# series.
+"$exe" run "$demo" --out "$out/run" --set time.end=0.005 --quiet > "$out/reuse.txt" 2>&1; rc=$?
+[ $rc -eq 2 ] || fail "reused output folder: exit $rc, expected 2"
+grep -q "holds the results of an earlier run" "$out/reuse.txt" || fail "reuse message: $(cat "$out/reuse.txt")"
+[ -s "$out/run/vtk/particles_00002.vtu" ] || fail "the refused run touched the old results"
+"$exe" run "$demo" --out "$out/run" --set time.end=0.002 --quiet --overwrite || fail "--overwrite run"
+[ ! -e "$out/run/vtk/particles_00002.vtu" ] || fail "--overwrite left a stale frame"
+[ "$(grep -c '<DataSet' "$out/run/vtk/particles.pvd")" -eq "$(ls "$out/run/vtk/"*.vtu | wc -l)" ] \
+    || fail "the .pvd series and the frames on disk disagree"
+
+# Fluid thrown upwards out of the domain: the run must stop (exit 3) with a message saying
+# where, keeping summary.json.
+"$exe" run "$demo" --out "$out/unstable" --set fluid.0.velocity=[0,5] --set time.end=0.5 --quiet \
     > "$out/unstable.txt" 2>&1; rc=$?
 [ $rc -eq 3 ] || fail "unstable run: exit $rc, expected 3"
 grep -q "left the domain" "$out/unstable.txt" || fail "instability message: $(cat "$out/unstable.txt")"
 grep -q '"status": "unstable"' "$out/unstable/summary.json" || fail "unstable summary"
+/usr/bin/python3 -c "import json,sys; json.load(open(sys.argv[1]))" "$out/unstable/summary.json" \
+    || fail "the unstable run's summary.json is not valid JSON"
 [ -s "$out/unstable/vtk/particles.pvd" ] || fail "unstable run lost its output"
 # SIGTERM (or Ctrl-C) during a run: it stops after the current step (exit 130), keeping the
 # probes, frames and a summary that says so.

@@ -123,4 +123,14 @@ with tempfile.TemporaryDirectory() as d:
     assert "| F30-10 | 2d | 510 / 20.4 kg" in out, out
     assert "| B30-10 | 2d |" in out and "| 10.0 |" in out and "| 11 (-9 %) |" in out, out
     assert "| 1.18 | 0.900 | 2.00 / 0.20 | 3–6 |" in out and "+0 % vs exp." in out, out
+    assert "recorded earlier" not in out, out  # only with --with-recorded
+    # No runs: exit 2, no table filled from records, no figure.
+    report = os.path.join(root, "tools", "papers", "report.py")
+    for empty in (os.path.join(d, "no_such_folder"), os.path.join(d, "empty")):
+        os.makedirs(os.path.join(d, "empty"), exist_ok=True)
+        figs = os.path.join(d, "figs")
+        r = subprocess.run([sys.executable, report, empty, "--figures", figs],
+                           capture_output=True, text=True)
+        assert r.returncode == 2 and "no runs" in r.stderr, (r.returncode, r.stdout, r.stderr)
+        assert not os.path.exists(figs) and "0.935" not in r.stdout, r.stdout
 print("papers report: OK")

@@ -221,7 +221,7 @@ TEST(RigidBodies, BodyTakenByAnOutletStopsTouchingOthers) {
     s2.velocity = {-0.5, 0, 0};
     const int a = rig.add(s1, 1000), b = rig.add(s2, 2000);
     rig.start({0, 0, 0});
-    flow::Outlet outlet(io::OutletSpec{"sink", {0.1, -1, -1}, {0.5, 1, 1}}, 1000);
+    flow::Outlet outlet(io::OutletSpec{"sink", {0.1, -1, -1}, {0.5, 1, 1}, 0.01, {}}, 1000);
     std::vector<std::uint8_t> none;
     outlet.apply(nullptr, nullptr, rig.solver.get());
     ASSERT_TRUE(rig.solver->removed(b));

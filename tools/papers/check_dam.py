@@ -107,7 +107,9 @@ def current_realizations(found, extra):
     return current
 
 
-def report(root, figures, records=RECORDED):
+def report(root, figures, records=()):
+    """Tables and figures from the runs under root; `records` (e.g. RECORDED, with
+    report.py --with-recorded) adds earlier runs' values, labelled as such in the table."""
     lines = ["### Slit check dam, trapping efficiency (section A)", ""]
     found = {r: analyse(os.path.join(root, f"A_check_s{r}")) for r in RATIOS}
     found = {r: a for r, a in found.items() if a is not None}
@@ -143,7 +145,7 @@ def report(root, figures, records=RECORDED):
                      f"{mass(a['up'])} / {mass(a['down'])}",
                      f"{w0:g}–{round(min(w1, a['t_end']), 2):g}",
                      " / ".join(mass(e) for e in a["halves"]), paper, diff,
-                     "recorded" if a.get("recorded") else
+                     "recorded earlier, not in these runs" if a.get("recorded") else
                      f"{wall_seconds(run) / 60:.0f} min, {status(run)}"])
     lines += table(["s/d95", "E", "M_up / M_down [kg]", "window [s]",
                     "E, first / second half", "paper", "diff.", "run"], rows)

@@ -1,6 +1,7 @@
 // debrisflow command line: run and check case files.
 #include "debrisflow/app/build_info.hpp"
 #include "debrisflow/app/simulation.hpp"
+#include "debrisflow/app/step_estimate.hpp"
 #include "debrisflow/app/stop_request.hpp"
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/core/memory_budget.hpp"
@@ -19,52 +20,11 @@ using namespace debrisflow;
 
 namespace {
 
-// The global step a run starts with and what limits it (as `check` prints it).
-struct StepEstimate {
-    Real dt = std::numeric_limits<Real>::max();
-    std::string limiter;
-};
-
-StepEstimate estimate_step(app::Simulation& sim) {
-    const io::CaseSpec& spec = sim.spec();
-    StepEstimate e;
-    if (sim.has_fluid()) {
-        const auto d = sim.solver().initial_dt();
-        e = {d.dt, "sph/" + d.limiter};
-    }
-    if (sim.has_grains() && !spec.dem.params.subcycle && sim.grains().dt() < e.dt)
-        e = {sim.grains().dt(), "dem"};
-    if (sim.has_bodies() && spec.rigid.dt > 0 && spec.rigid.dt < e.dt)
-        e = {spec.rigid.dt, "rigid dt"};
-    const bool fem_alone = !sim.has_fluid() && !sim.has_grains() && !sim.has_bodies();
-    if (sim.has_fem() && fem_alone && sim.fem().critical_dt() < e.dt)
-        e = {sim.fem().critical_dt(), "fem element CFL"};
-    return e;
-}
-
-// A run of more than 1e10 steps cannot end on any machine (days at a microsecond a step);
-// `check` and `run` refuse it, naming the step, what limits it and the end time.
-void require_feasible_steps(app::Simulation& sim) {
-    const StepEstimate e = estimate_step(sim);
-    const io::CaseSpec& spec = sim.spec();
-    if (!(e.dt > 0) || !std::isfinite(e.dt))
-        throw InputError(fmt::format("{}: the time step is {} s ({}); check the material and "
-                                     "fluid parameters",
-                                     spec.time_origin.at("end"), e.dt, e.limiter));
-    const double steps = double(spec.t_end) / double(e.dt);
-    if (steps > 1e10)
-        throw InputError(fmt::format(
-            "{}: time.end = {} s needs about {:.3g} steps of {:.3g} s (limited by {}): more than "
-            "1e10 steps cannot finish; shorten time.end, or coarsen what limits the step (dp, "
-            "the smallest grain, the stiffness)",
-            spec.time_origin.at("end"), spec.t_end, steps, e.dt, e.limiter));
-}
-
 int check(const std::string& file, const std::vector<std::string>& sets) {
     const io::CaseSpec spec = io::read_case(file, sets);
     const auto estimate = scenario::estimate_resources(spec);
     app::Simulation sim(spec);
-    require_feasible_steps(sim);
+    app::require_feasible_steps(sim);
     const auto& set = sim.particles();
     const long fluid = set.count(particles::Kind::fluid);
     const long boundary = set.count(particles::Kind::boundary);
@@ -140,7 +100,7 @@ int check(const std::string& file, const std::vector<std::string>& sets) {
             "feed '{}': Q_s(0) = {:.4g} m^3/s of rocks of material '{}' ({} shapes, "
             "sphericity within +-{:.0f} %)\n",
             f.name, f.discharge.front(), f.material, f.rocks.size(), 100 * f.sphericity_tolerance);
-    const StepEstimate step = estimate_step(sim);
+    const app::StepEstimate step = app::estimate_step(sim);
     std::cout << fmt::format("time step: {:.4g} s ({}); about {:.0f} steps to the end time\n",
                              step.dt, step.limiter, spec.t_end / step.dt);
     return 0;
@@ -199,7 +159,7 @@ int main(int argc, char** argv) {
         const io::CaseSpec spec = io::read_case(file, sets);
         if (out.empty()) out = "out/" + spec.name;
         app::Simulation sim(spec);
-        require_feasible_steps(sim);
+        app::require_feasible_steps(sim);
         io::prepare_output_dir(out, overwrite);
         app::install_stop_handlers();
         sim.run({out, quiet, threads});

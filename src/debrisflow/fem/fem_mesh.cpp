@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <unordered_map>
@@ -149,6 +150,20 @@ FemMesh read_gmsh(const std::string& path, ElementType t) {
     std::ifstream in(path);
     if (!in) throw InputError(path + ": mesh file not found");
     auto fail = [&](const std::string& why) { throw InputError(path + ": " + why); };
+    // Every count in the file is bounded by the file's size (each item takes bytes of it), and
+    // every read is checked, so a corrupt count can neither allocate nor loop without end.
+    std::error_code size_error;
+    const auto file_bytes = long(std::filesystem::file_size(path, size_error));
+    auto count = [&](long n, const char* section) {
+        if (!in) fail(fmt::format("malformed or truncated {} section", section));
+        if (n < 0 || n > file_bytes)
+            fail(fmt::format("{} count {} is impossible in a file of {} bytes", section, n,
+                             file_bytes));
+        return n;
+    };
+    auto ok = [&](const char* section) {
+        if (!in) fail(fmt::format("malformed or truncated {} section", section));
+    };
     const int want = t == ElementType::quad4  ? 3
                      : t == ElementType::tet4 ? 4
                      : t == ElementType::hex8 ? 5
@@ -163,61 +178,74 @@ FemMesh read_gmsh(const std::string& path, ElementType t) {
     bool version_ok = false;
     while (std::getline(in, line)) {
         if (line == "$MeshFormat") {
-            double version;
-            int binary;
+            double version = 0;
+            int binary = 0;
             in >> version >> binary;
+            ok("$MeshFormat");
             if (version < 4 || version >= 5)
                 fail(fmt::format("MSH version {} (need 4.x)", version));
             if (binary) fail("binary MSH (save as ASCII: gmsh -save_all -format msh4)");
             version_ok = true;
         } else if (line == "$PhysicalNames") {
-            int count;
-            in >> count;
-            for (int k = 0; k < count; ++k) {
+            long n = 0;
+            in >> n;
+            count(n, "$PhysicalNames");
+            for (long k = 0; k < n; ++k) {
                 int dim, tag;
                 std::string name;
                 in >> dim >> tag;
                 std::getline(in, name);
+                ok("$PhysicalNames");
                 const auto a = name.find('"'), b = name.rfind('"');
                 phys_names[tag] =
                     a != std::string::npos && b > a ? name.substr(a + 1, b - a - 1) : name;
             }
         } else if (line == "$Entities") {
-            long counts[4];
+            long counts[4] = {0, 0, 0, 0};
             in >> counts[0] >> counts[1] >> counts[2] >> counts[3];
+            for (long n : counts) count(n, "$Entities");
             for (int dim = 0; dim < 4; ++dim)
                 for (long k = 0; k < counts[dim]; ++k) {
-                    int tag;
+                    int tag = 0;
                     double box[6];
                     in >> tag;
                     for (int b = 0; b < (dim == 0 ? 3 : 6); ++b) in >> box[b];
-                    int np;
+                    long np = 0;
                     in >> np;
+                    count(np, "$Entities");
                     auto& tags = entity_phys[{dim, tag}];
-                    for (int p = 0; p < np; ++p) {
-                        int ptag;
+                    for (long p = 0; p < np; ++p) {
+                        int ptag = 0;
                         in >> ptag;
+                        ok("$Entities");
                         tags.push_back(std::abs(ptag));
                     }
                     if (dim > 0) {
-                        int nb;
+                        long nb = 0;
                         in >> nb;
-                        for (int b = 0; b < nb; ++b) {
+                        count(nb, "$Entities");
+                        for (long b = 0; b < nb; ++b) {
                             int btag;
                             in >> btag;
+                            ok("$Entities");
                         }
                     }
                 }
         } else if (line == "$Nodes") {
-            long blocks, total, lo, hi;
+            long blocks = 0, total = 0, lo, hi;
             in >> blocks >> total >> lo >> hi;
+            count(blocks, "$Nodes");
+            count(total, "$Nodes");
             for (long b = 0; b < blocks; ++b) {
-                int edim, etag, param;
-                long count;
-                in >> edim >> etag >> param >> count;
-                std::vector<long> tags(static_cast<std::size_t>(count));
+                int edim = 0, etag, param = 0;
+                long n = 0;
+                in >> edim >> etag >> param >> n;
+                count(n, "$Nodes");
+                if (edim < 0 || edim > 3) fail("$Nodes: entity dimension must be 0..3");
+                std::vector<long> tags(static_cast<std::size_t>(n));
                 for (auto& tg : tags) in >> tg;
-                for (long k = 0; k < count; ++k) {
+                ok("$Nodes");
+                for (long k = 0; k < n; ++k) {
                     Vec3 p;
                     in >> p.x >> p.y >> p.z;
                     if (param)
@@ -225,20 +253,28 @@ FemMesh read_gmsh(const std::string& path, ElementType t) {
                             double u;
                             in >> u;
                         }
+                    ok("$Nodes");
+                    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+                        fail(fmt::format("$Nodes: node {} has a non-finite coordinate",
+                                         tags[std::size_t(k)]));
                     coords[tags[std::size_t(k)]] = p;
                 }
             }
         } else if (line == "$Elements") {
-            long blocks, total, lo, hi;
+            long blocks = 0, total = 0, lo, hi;
             in >> blocks >> total >> lo >> hi;
+            count(blocks, "$Elements");
+            count(total, "$Elements");
             for (long b = 0; b < blocks; ++b) {
                 int edim, etag, type;
-                long count;
-                in >> edim >> etag >> type >> count;
+                long n = 0;
+                in >> edim >> etag >> type >> n;
+                count(n, "$Elements");
                 std::getline(in, line);
                 const auto phys = entity_phys.find({edim, etag});
-                for (long k = 0; k < count; ++k) {
+                for (long k = 0; k < n; ++k) {
                     std::getline(in, line);
+                    ok("$Elements");
                     std::istringstream ls(line);
                     long tag, v;
                     ls >> tag;

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <fmt/format.h>
 #include <sstream>
 
@@ -318,19 +319,28 @@ ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
 } // namespace
 
 CaseSpec read_case(const std::string& path, const std::vector<std::string>& overrides) {
-    CaseSpec c;
-    c.file = path;
-    toml::table doc;
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
         throw InputError(path + ": is a folder, not a case file (give the .toml file)");
-    if (std::filesystem::exists(path, ec) && std::filesystem::file_size(path, ec) > (64u << 20))
+    if (!std::filesystem::exists(path, ec)) throw InputError(path + ": file not found");
+    if (std::filesystem::file_size(path, ec) > (64u << 20))
         throw InputError(path + ": larger than 64 MiB; a case file is a few kilobytes of TOML");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path + ": cannot open the file");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return read_case_text(text.str(), path, overrides);
+}
+
+CaseSpec read_case_text(const std::string& text, const std::string& path,
+                        const std::vector<std::string>& overrides) {
+    CaseSpec c;
+    c.file = path;
+    toml::table doc;
     try {
-        doc = toml::parse_file(path);
+        doc = toml::parse(text, path);
     } catch (const toml::parse_error& e) {
         const auto& src = e.source();
-        if (!std::filesystem::exists(path)) throw InputError(path + ": file not found");
         throw InputError(
             fmt::format("{}:{}:{}: {}", path, src.begin.line, src.begin.column, e.description()));
     }
@@ -346,7 +356,7 @@ CaseSpec read_case(const std::string& path, const std::vector<std::string>& over
     c.dim = int(root.integer("dimensions", 2, 2, 3));
     // dp is the fluid particle spacing; a grains-only case may omit it.
     const bool fluid_input = !root.tables("fluid").empty() || !root.tables("inlet").empty();
-    c.dp = fluid_input ? root.positive("dp") : root.real("dp", 0);
+    c.dp = fluid_input ? root.positive("dp") : root.positive("dp", 0);
 
     auto time = root.table("time");
     if (!time) root.fail("time", "missing required table [time] with key 'end'");

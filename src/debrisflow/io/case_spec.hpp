@@ -267,5 +267,9 @@ struct CaseSpec {
 
 // Reads and validates a case file; `overrides` are "key=value" strings from --set.
 CaseSpec read_case(const std::string& path, const std::vector<std::string>& overrides);
+// The same from the text of a case; `path` names it in messages and anchors relative mesh
+// and state files (the fuzz harness reads its inputs this way).
+CaseSpec read_case_text(const std::string& text, const std::string& path,
+                        const std::vector<std::string>& overrides);
 
 } // namespace debrisflow::io
