@@ -1,6 +1,10 @@
 // Case files: errors name file:line:column and the key; --set overrides any key.
 #include "debrisflow/core/error.hpp"
+#include "debrisflow/core/memory_budget.hpp"
+#include "debrisflow/io/config_table.hpp"
+#include "debrisflow/io/toml_echo.hpp"
 #include "run_case.hpp"
+#include <filesystem>
 #include <gtest/gtest.h>
 
 using namespace debrisflow;
@@ -182,4 +186,67 @@ rocks = ["no_such_rock.stl"]
     EXPECT_TRUE(c.dem.feeds.empty());
     EXPECT_TRUE(c.has_bodies());
     EXPECT_NEAR(c.rigid.feeds[0].sphericity_tolerance, 0.15, 1e-15);
+}
+
+// NaN, infinity and overflowing literals are rejected where they are read, in arrays too.
+TEST(CaseReader, NonFiniteNumbersAreRejectedWithTheKey) {
+    EXPECT_NE(error_of(minimal, {"sph.alpha=nan"}).find("key 'sph.alpha': must be a finite"),
+              std::string::npos);
+    // 1e999 is no TOML float (it overflows): --set takes it as a string, which is refused.
+    EXPECT_NE(error_of(minimal, {"time.end=1e999"}).find("key 'time.end': expected a number"),
+              std::string::npos);
+    EXPECT_NE(error_of(minimal, {"fluid.0.max=[0.2, -inf]"})
+                  .find("key 'fluid.0.max': every element must be a finite number"),
+              std::string::npos);
+    EXPECT_NE(error_of(minimal, {"domain.min=[-1e308, -0.1]", "domain.max=[1e308, 1]"})
+                  .find("key 'domain.max': the extent in x overflows"),
+              std::string::npos);
+}
+
+TEST(CaseReader, NamesAreFileSafe) {
+    EXPECT_NE(error_of(minimal, {"fluid.0.name=\"a/b\""}).find("key 'fluid.0.name': a name may"),
+              std::string::npos);
+    EXPECT_NE(error_of(minimal, {"name=\"\""}).find("a name needs 1 to 64 characters, got 0"),
+              std::string::npos);
+    EXPECT_EQ(io::file_safe_name("my case (v2).toml"), "my_case__v2_.toml");
+    EXPECT_EQ(io::file_safe_name(".hidden"), "_hidden");
+    EXPECT_EQ(io::file_safe_name(std::string(100, 'x')).size(), 64u);
+}
+
+// A spec keeps where its blocks are, so that builders name file, line and key.
+TEST(CaseReader, OriginsNameLineAndKey) {
+    const auto c = test::case_from_toml("origin", minimal);
+    ASSERT_EQ(c.fluids.size(), 1u);
+    EXPECT_NE(c.fluids[0].origin.at("max").find(":13:7: key 'fluid.0.max'"), std::string::npos)
+        << c.fluids[0].origin.at("max");
+    EXPECT_NE(c.fluids[0].origin.block().find(": [fluid.0]"), std::string::npos);
+    EXPECT_NE(c.domain_origin.at("max").find(":6:7: key 'domain.max'"), std::string::npos);
+}
+
+TEST(MemoryBudget, ParsesSizes) {
+    EXPECT_DOUBLE_EQ(parse_bytes("4G"), 4.0 * (1L << 30));
+    EXPECT_DOUBLE_EQ(parse_bytes("512MiB"), 512.0 * (1L << 20));
+    EXPECT_DOUBLE_EQ(parse_bytes("2e9"), 2e9);
+    EXPECT_THROW(parse_bytes("4Q"), InputError);
+    EXPECT_THROW(parse_bytes("nan"), InputError);
+    EXPECT_THROW(parse_bytes("1K"), InputError); // below 1 MiB
+}
+
+// The echoed case.toml writes shortest round-trip numbers and parses back to the same document
+// for every shipped case.
+TEST(CaseReader, EchoedCaseRoundTrips) {
+    const auto c = test::case_from_toml("echo", minimal, {"time.end=0.1", "sph.c0=20.5"});
+    EXPECT_NE(c.resolved_toml.find("end = 0.1\n"), std::string::npos) << c.resolved_toml;
+    EXPECT_NE(c.resolved_toml.find("c0 = 20.5\n"), std::string::npos) << c.resolved_toml;
+    EXPECT_EQ(c.resolved_toml.find("0000000"), std::string::npos) << c.resolved_toml;
+    namespace fs = std::filesystem;
+    int cases = 0;
+    for (const auto& e : fs::recursive_directory_iterator(DEBRISFLOW_SOURCE_DIR "/cases")) {
+        if (e.path().extension() != ".toml") continue;
+        const toml::table doc = toml::parse_file(e.path().string());
+        const toml::table again = toml::parse(io::echo_toml(doc));
+        EXPECT_EQ(doc, again) << e.path();
+        ++cases;
+    }
+    EXPECT_GT(cases, 20);
 }

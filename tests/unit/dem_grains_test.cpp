@@ -132,6 +132,27 @@ file = ")" + dir + R"(/grains_settled.csv"
     EXPECT_LT(top, 0.06); // 300 grains of 8 mm fill ~3 layers of the 0.1 x 0.1 m floor
     EXPECT_EQ(vmax, 0);
     EXPECT_LT(sim.grains().unbalanced_ratio(), 0.05); // still near equilibrium after the run
+    // The saved state with overrides: a region keeps the grains whose centre lies in it, a
+    // velocity applies to all of them, and their material stays the file's.
+    auto subset = test::case_from_toml("dem_reload_subset", grains_case(R"([[grains]]
+name = "bottom"
+packing = "file"
+file = ")" + dir + R"(/grains_settled.csv"
+velocity = [0.1, 0, 0]
+region = { shape = "box", min = [-1, -1, -1], max = [1, 1, 0.006] }
+)"));
+    app::Simulation part(subset);
+    long low = 0;
+    for (Index i = 0; i < g.size(); ++i) low += g.pos[std::size_t(i)].z <= 0.006;
+    const auto& b = part.grains().grains();
+    EXPECT_GT(low, 0);
+    EXPECT_LT(low, 300);
+    EXPECT_EQ(b.size(), low);
+    for (Index i = 0; i < b.size(); ++i) {
+        EXPECT_EQ(b.vel[std::size_t(i)].x, 0.1);
+        EXPECT_LE(b.pos[std::size_t(i)].z, 0.006);
+        EXPECT_EQ(b.material[std::size_t(i)], 0);
+    }
 }
 
 // Grains resting on a 20 degree incline with friction 0.5 and elastic-plastic rolling

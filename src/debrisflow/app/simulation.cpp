@@ -68,8 +68,8 @@ Simulation::Simulation(io::CaseSpec spec) : spec_(std::move(spec)) {
         if (p.dt > 0 && p.dt > stable.dt)
             throw InputError(fmt::format("{}: dem.dt = {:.4g} s exceeds the stable step {:.4g} s "
                                          "({}); use dem.dt <= {:.4g} s",
-                                         spec_.dem_origin.at("dt"), p.dt, stable.dt,
-                                         stable.limiter, stable.dt));
+                                         spec_.dem_origin.at("dt"), p.dt, stable.dt, stable.limiter,
+                                         stable.dt));
     }
     for (const auto& p : spec_.probes) probes_.push_back(probes::make_probe(p, spec_));
     for (const auto& in : spec_.inlets) {

@@ -42,7 +42,8 @@ double parse_bytes(const std::string& text) {
         throw InputError("--max-memory " + text + ": expected a size such as 4G or 512M");
     }
     std::string unit = text.substr(used);
-    if (unit.size() == 3 && (unit[1] == 'i' || unit[1] == 'I') && (unit[2] == 'B' || unit[2] == 'b'))
+    if (unit.size() == 3 && (unit[1] == 'i' || unit[1] == 'I') &&
+        (unit[2] == 'B' || unit[2] == 'b'))
         unit = unit.substr(0, 1);
     double scale = 1;
     if (unit == "K" || unit == "k")
@@ -54,7 +55,8 @@ double parse_bytes(const std::string& text) {
     else if (unit == "T" || unit == "t")
         scale = 1024.0 * 1024 * 1024 * 1024;
     else if (!unit.empty() && unit != "B" && unit != "b")
-        throw InputError("--max-memory " + text + ": unknown unit '" + unit + "' (use K, M, G or T)");
+        throw InputError("--max-memory " + text + ": unknown unit '" + unit +
+                         "' (use K, M, G or T)");
     v *= scale;
     if (!std::isfinite(v) || !(v >= 1024 * 1024))
         throw InputError("--max-memory " + text + ": must be a finite size of at least 1M");

@@ -92,8 +92,11 @@ void SphDemCoupling::interpolate() {
     Real max_rate = 0;
     const std::string law = drag_law_;
     std::visit(
-        [&](const auto& kernel) {
-            DragRegistry::visit_name(law, [&]<class Drag>() {
+        [&](const auto& kernel_model) {
+            // A copy captured by value: clang 14 rejects the enclosing generic lambda's
+            // parameter inside the nested lambdas below.
+            const auto kernel = kernel_model;
+            DragRegistry::visit_name(law, [&, kernel]<class Drag>() {
 #pragma omp parallel for schedule(static) reduction(max : max_rate)
                 for (Index i = 0; i < ng; ++i) {
                     const Vec3 xi = g.pos[i];
@@ -191,7 +194,10 @@ void SphDemCoupling::apply_reaction() {
                 Vec3 a{};
                 ggrid.for_each_neighbor(
                     -1, pv.pos(j), gp, gp + 1, gp + 2,
-                    [&](Index i, Vec3, Real r2) { a += kernel.w(std::sqrt(r2)) * c[i]; }, 3);
+                    [&a, &kernel, c](Index i, Vec3, Real r2) {
+                        a += kernel.w(std::sqrt(r2)) * c[i];
+                    },
+                    3);
                 if (a.x == 0 && a.y == 0 && a.z == 0) continue;
                 const Real inv_rho = 1 / pv.rho[j];
                 pv.ax[j] += inv_rho * a.x;

@@ -1,7 +1,7 @@
 #include "debrisflow/dem/materials.hpp"
+#include "debrisflow/core/error.hpp"
 #include "debrisflow/dem/contact_laws_k.hpp"
 #include <cmath>
-#include "debrisflow/core/error.hpp"
 #include <fmt/format.h>
 #include <stdexcept>
 

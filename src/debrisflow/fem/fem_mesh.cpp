@@ -2,8 +2,8 @@
 #include "debrisflow/core/error.hpp"
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <filesystem>
+#include <fmt/format.h>
 #include <fstream>
 #include <sstream>
 #include <unordered_map>

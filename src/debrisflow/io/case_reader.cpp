@@ -6,13 +6,14 @@
 #include "debrisflow/io/flow_reader.hpp"
 #include "debrisflow/io/rigid_reader.hpp"
 #include "debrisflow/io/structure_reader.hpp"
+#include "debrisflow/io/toml_echo.hpp"
 #include "debrisflow/kernels/kernel.hpp"
 #include "debrisflow/sph/sph_models.hpp"
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <fmt/format.h>
+#include <fstream>
 #include <sstream>
 
 namespace debrisflow::io {
@@ -86,7 +87,8 @@ void read_sph(const ConfigTable& t, CaseSpec& c) {
     p.dim = c.dim;
     p.dp = c.dp;
     p.kernel = t.choice("kernel", kernels::KernelRegistry::names(), "wendland_c2");
-    const Real h_over_dp = t.positive("h_over_dp", p.kernel == "cubic_spline" ? std::sqrt(3.0) : 1.5);
+    const Real h_over_dp =
+        t.positive("h_over_dp", p.kernel == "cubic_spline" ? std::sqrt(3.0) : 1.5);
     if (h_over_dp < 0.5 || h_over_dp > 4)
         t.fail("h_over_dp", "must be within [0.5, 4] (usual: 1.2 to 2; each particle then has "
                             "a few dozen to a few hundred neighbours)");
@@ -141,7 +143,8 @@ sph::Domain read_domain(const ConfigTable& t, int dim) {
         if (!(dim == 2 && k == 1) && !(d.hi[k] > d.lo[k]))
             t.fail("max", fmt::format("must exceed min in {}", "xyz"[k]));
         else if (!std::isfinite(d.hi[k] - d.lo[k]))
-            t.fail("max", fmt::format("the extent in {} overflows (not a finite number)", "xyz"[k]));
+            t.fail("max",
+                   fmt::format("the extent in {} overflows (not a finite number)", "xyz"[k]));
     if (t.has("periodic")) {
         for (const auto& s : t.strings("periodic")) {
             if (s == "x")
@@ -178,6 +181,9 @@ ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
                                "trapping", "deposit", "flow_section", "fluid_runup", "pressure_map",
                                "fem_displacement", "fem_force", "fem_face_load"});
     p.every = t.positive("every", 0.001);
+    if (c.t_end / p.every > 1e8)
+        t.fail("every", fmt::format("would write {:.3g} rows over time.end = {} s (at most 1e8)",
+                                    c.t_end / p.every, c.t_end));
     const bool fluid_probe = p.type == "pressure" || p.type == "velocity" || p.type == "gauge" ||
                              p.type == "front" || p.type == "flow_section" ||
                              p.type == "fluid_runup" || p.type == "pressure_map";
@@ -345,9 +351,7 @@ CaseSpec read_case_text(const std::string& text, const std::string& path,
             fmt::format("{}:{}:{}: {}", path, src.begin.line, src.begin.column, e.description()));
     }
     for (const auto& o : overrides) apply_override(doc, o);
-    std::ostringstream resolved;
-    resolved << doc;
-    c.resolved_toml = resolved.str();
+    c.resolved_toml = echo_toml(doc);
 
     ConfigTable root(doc, path, "");
     c.origin = root.origin();
@@ -371,6 +375,10 @@ CaseSpec read_case_text(const std::string& text, const std::string& path,
         c.vtk = output->boolean("vtk", true);
         c.vtk_every = output->real("vtk_every", 0);
         if (c.vtk_every < 0) output->fail("vtk_every", "must be >= 0");
+        if (c.vtk_every > 0 && c.t_end / c.vtk_every > 1e5)
+            output->fail("vtk_every", fmt::format("would write {:.3g} frames over time.end = {} s "
+                                                  "(at most 1e5)",
+                                                  c.t_end / c.vtk_every, c.t_end));
         c.progress_seconds = output->positive("progress_seconds", 2);
         output->finish();
     }

@@ -50,7 +50,7 @@ struct WallSpec {
     std::vector<std::array<Vec3, 2>> boxes;
     std::string structure; // the [[structure]] type that produced it ("" for [[wall]])
     Real slit_density = 0; // slit dams: sum of openings / dam width
-    Origin origin; // where the block is in the case file
+    Origin origin;         // where the block is in the case file
 };
 
 // Grain sizes: "mono" (diameter), "lognormal" (median d50, log-standard deviation sigma) or
@@ -74,6 +74,11 @@ struct GrainsSpec {
     Vec3 position, velocity, angular_velocity;
     unsigned seed = 1;
     std::string file;
+    // packing = "file": which of material, velocity, angular_velocity and region the block
+    // gives to override the saved state (region: keep the grains whose centre is inside).
+    struct FileOverrides {
+        bool material = false, velocity = false, angular_velocity = false, region = false;
+    } file_overrides;
     Origin origin; // where the block is in the case file
 };
 
@@ -94,7 +99,7 @@ struct FeedSpec {
     std::vector<std::string> rocks; // STL files (resolved paths); empty: a grain feed
     Real sphericity_tolerance = Real(0.15);
     int layers = 0; // SPH boundary layers of each rock (0: automatic)
-    Origin origin; // where the block is in the case file
+    Origin origin;  // where the block is in the case file
 };
 
 struct DemSpec {
@@ -131,7 +136,7 @@ struct BodySpec {
     std::optional<Vec3> track_point; // a named point reported by the body probe (world, t=0)
     Real contact_radius = 0;         // Hertz curvature radius at vertices [m] (0: automatic)
     int layers = 0;                  // SPH boundary layers sampled inside the surface
-    Origin origin; // where the block is in the case file
+    Origin origin;                   // where the block is in the case file
 };
 
 // A constraint between two bodies, or a body and the ground (body_b empty): hinge (revolute

@@ -146,8 +146,8 @@ std::string ConfigTable::string(const std::string& key, const std::string& fallb
 
 namespace {
 bool name_char(char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-           c == '_' || c == '-' || c == '.';
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+           c == '-' || c == '.';
 }
 constexpr std::size_t max_name_length = 64;
 } // namespace
@@ -155,8 +155,8 @@ constexpr std::size_t max_name_length = 64;
 std::string ConfigTable::name(const std::string& key) const {
     const std::string v = string(key);
     if (v.empty() || v.size() > max_name_length)
-        fail(key, fmt::format("a name needs 1 to {} characters, got {}", max_name_length,
-                              v.size()));
+        fail(key,
+             fmt::format("a name needs 1 to {} characters, got {}", max_name_length, v.size()));
     if (v.front() == '.') fail(key, "a name must not start with '.'");
     for (const char c : v)
         if (!name_char(c))

@@ -3,8 +3,8 @@
 #include "debrisflow/dem/contact_laws_k.hpp"
 #include <algorithm>
 #include <filesystem>
-#include <limits>
 #include <fmt/format.h>
+#include <limits>
 
 namespace debrisflow::io {
 
@@ -62,10 +62,9 @@ dem::PairOverride read_contact(const ConfigTable& t, const std::vector<dem::Mate
         if (!(*o.restitution > 0 && *o.restitution <= 1))
             t.fail("restitution", "must be within (0, 1]");
         const std::string law =
-            o.law ? *o.law
-                  : std::find_if(mats.begin(), mats.end(), [&](const auto& m) {
-                        return m.name == o.a;
-                    })->law;
+            o.law ? *o.law : std::find_if(mats.begin(), mats.end(), [&](const auto& m) {
+                                 return m.name == o.a;
+                             })->law;
         if (law == "hertz_mindlin" && *o.restitution < dem::hertz_min_restitution)
             t.fail("restitution", fmt::format("must be within [{}, 1] for the hertz_mindlin law",
                                               dem::hertz_min_restitution));
@@ -138,15 +137,25 @@ GrainsSpec read_grains(const ConfigTable& t, const CaseSpec& c) {
     GrainsSpec g;
     g.origin = t.origin();
     g.name = t.name("name");
-    g.material = t.string("material");
-    const auto& mats = c.dem.materials;
-    if (std::none_of(mats.begin(), mats.end(), [&](const auto& m) { return m.name == g.material; }))
-        t.fail("material", "no [[material]] named \"" + g.material + "\"");
     g.packing = t.choice("packing", {"random", "lattice", "single", "file"}, "random");
+    const bool file = g.packing == "file";
+    // A saved state keeps each grain's own material, velocity and spin unless the block gives
+    // them; a region keeps the grains whose centre lies in it.
+    g.file_overrides = {t.has("material"), t.has("velocity"), t.has("angular_velocity"),
+                        t.has("region")};
+    g.material = file ? t.string("material", "") : t.string("material");
+    const auto& mats = c.dem.materials;
+    if ((!file || !g.material.empty()) &&
+        std::none_of(mats.begin(), mats.end(), [&](const auto& m) { return m.name == g.material; }))
+        t.fail("material", "no [[material]] named \"" + g.material + "\"");
     g.velocity = t.vec3("velocity", c.dim, {});
     g.angular_velocity = t.vec3("angular_velocity", 3, {});
-    if (g.packing == "file") {
+    if (file) {
         g.file = t.string("file");
+        if (auto region = t.table("region")) {
+            g.region = read_shape(*region, c.dim, {"box", "cylinder", "stl"});
+            region->finish();
+        }
         t.finish();
         return g;
     }

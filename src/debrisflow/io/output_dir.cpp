@@ -10,8 +10,9 @@ namespace fs = std::filesystem;
 
 namespace {
 // Everything a run writes into its output folder.
-const char* const results[] = {"summary.json", "log.txt", "case.toml", "vtk", "probes",
-                               "grains_settled.csv", "grains_final.csv"};
+const char* const results[] = {
+    "summary.json",       "log.txt",         "case.toml", "vtk", "probes",
+    "grains_settled.csv", "grains_final.csv"};
 } // namespace
 
 void prepare_output_dir(const std::string& dir, bool overwrite) {
@@ -20,7 +21,8 @@ void prepare_output_dir(const std::string& dir, bool overwrite) {
         throw InputError(fmt::format("--out {}: exists and is not a folder", dir));
     std::string found;
     for (const char* r : results)
-        if (fs::exists(fs::path(dir) / r, ec)) found += (found.empty() ? "" : ", ") + std::string(r);
+        if (fs::exists(fs::path(dir) / r, ec))
+            found += (found.empty() ? "" : ", ") + std::string(r);
     if (!found.empty() && !overwrite)
         throw InputError(fmt::format("--out {}: the folder holds the results of an earlier run "
                                      "({}); choose another --out, or pass --overwrite to replace "
@@ -33,7 +35,8 @@ void prepare_output_dir(const std::string& dir, bool overwrite) {
                 fmt::format("--out {}: cannot remove the old {}: {}", dir, r, ec.message()));
     }
     fs::create_directories(dir, ec);
-    if (ec) throw InputError(fmt::format("--out {}: cannot create the folder: {}", dir, ec.message()));
+    if (ec)
+        throw InputError(fmt::format("--out {}: cannot create the folder: {}", dir, ec.message()));
 }
 
 } // namespace debrisflow::io

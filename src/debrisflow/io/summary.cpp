@@ -1,4 +1,5 @@
 #include "debrisflow/io/summary.hpp"
+#include "debrisflow/io/quoted.hpp"
 #include <cmath>
 #include <fmt/format.h>
 #include <fstream>
@@ -8,24 +9,6 @@ namespace debrisflow::io {
 namespace {
 std::string num(double v) {
     return std::isfinite(v) ? fmt::format("{:.9g}", v) : "null";
-}
-// A JSON string (RFC 8259 section 7): quote, backslash and every control character escaped.
-std::string quoted(const std::string& s) {
-    std::string o = "\"";
-    for (const char c : s) {
-        const auto u = static_cast<unsigned char>(c);
-        if (c == '"' || c == '\\')
-            o += {'\\', c};
-        else if (c == '\n')
-            o += "\\n";
-        else if (c == '\t')
-            o += "\\t";
-        else if (u < 0x20 || u == 0x7f)
-            o += fmt::format("\\u{:04x}", unsigned(u));
-        else
-            o += c;
-    }
-    return o + "\"";
 }
 } // namespace
 

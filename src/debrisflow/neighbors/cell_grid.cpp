@@ -17,10 +17,10 @@ void CellGrid::configure(Vec3 lo, Vec3 hi, Real radius, int dim, std::array<bool
     if (!std::isfinite(cells))
         throw InputError("the neighbour grid's extent is not finite; check domain.min/max");
     const bool any_periodic = periodic[0] || periodic[1] || periodic[2];
-    const Real cell = cells > max_cells && !any_periodic
-                          ? radius * Real(std::pow(cells / max_cells, 1.0 / (dim == 3 ? 3 : 2)) *
-                                          1.001)
-                          : radius;
+    const Real cell =
+        cells > max_cells && !any_periodic
+            ? radius * Real(std::pow(cells / max_cells, 1.0 / (dim == 3 ? 3 : 2)) * 1.001)
+            : radius;
     view_ = GridView{};
     view_.radius2 = radius * radius;
     for (int d = 0; d < 3; ++d) {

@@ -346,7 +346,8 @@ BuiltBody build_body(const io::BodySpec& b, const io::CaseSpec& c, Real density,
     auto shell = [&](Real spacing, Real thickness) {
         std::vector<BodySurfacePoint> pts;
         const std::string what = b.origin.block() + ": body '" + b.name + "'";
-        for (const Vec3& p : lattice(lo, hi, lo, spacing, dim, [](Vec3) { return true; }, what)) {
+        for (const Vec3& p : lattice(
+                 lo, hi, lo, spacing, dim, [](Vec3) { return true; }, what)) {
             const auto [d, n] = field.depth(p);
             if (d >= 0 && d < thickness) pts.push_back({p, n, d});
         }

@@ -1,7 +1,7 @@
 #include "debrisflow/scenario/build_grains.hpp"
-#include "debrisflow/scenario/resource_estimate.hpp"
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/dem/box_faces.hpp"
+#include "debrisflow/scenario/resource_estimate.hpp"
 #include "debrisflow/scenario/size_sampler.hpp"
 #include "debrisflow/scenario/stl_mesh.hpp"
 #include <algorithm>
@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <unordered_map>
@@ -164,8 +165,13 @@ void read_state(const io::CaseSpec& c, const io::GrainsSpec& b, dem::GrainSet& g
     std::filesystem::path p(b.file);
     if (p.is_relative()) p = std::filesystem::path(c.file).parent_path() / p;
     std::ifstream in(p);
-    if (!in) throw InputError(b.origin.at("file") + ": grains '" + b.name + "': cannot read " +
-                              p.string());
+    if (!in)
+        throw InputError(b.origin.at("file") + ": grains '" + b.name + "': cannot read " +
+                         p.string());
+    const auto& o = b.file_overrides;
+    std::optional<Region> subset;
+    if (o.region) subset.emplace(b.region, c.dim);
+    const Index before = g.size();
     std::string line;
     std::getline(in, line);
     long row = 1;
@@ -185,14 +191,20 @@ void read_state(const io::CaseSpec& c, const io::GrainsSpec& b, dem::GrainSet& g
         }
         for (int k = 0; k < 10; ++k)
             if (!std::isfinite(v[k]))
-                throw InputError(fmt::format("{}:{}: column {} is not a finite number", p.string(),
-                                             row, k + 1));
+                throw InputError(
+                    fmt::format("{}:{}: column {} is not a finite number", p.string(), row, k + 1));
         if (!(v[9] >= 1e-6))
             throw InputError(
                 fmt::format("{}:{}: the diameter {} m is below 1e-6 m", p.string(), row, v[9]));
-        add_grain(c, g, {v[0], v[1], v[2]}, {v[3], v[4], v[5]}, {v[6], v[7], v[8]}, v[9],
-                  material_index(c, f[10]));
+        const Vec3 x{v[0], v[1], v[2]};
+        if (subset && !subset->holds(x, 0)) continue;
+        add_grain(c, g, x, o.velocity ? b.velocity : Vec3{v[3], v[4], v[5]},
+                  o.angular_velocity ? b.angular_velocity : Vec3{v[6], v[7], v[8]}, v[9],
+                  material_index(c, o.material ? b.material : f[10]));
     }
+    if (subset && g.size() == before)
+        throw InputError(fmt::format("{}: grains '{}': no grain of {} has its centre in the region",
+                                     b.origin.at("region"), b.name, p.string()));
 }
 
 } // namespace

@@ -25,7 +25,8 @@ bool inside_cylinder(const io::ShapeSpec& s, int dim, Vec3 p) {
 
 std::vector<Vec3> fill_shape(const io::ShapeSpec& s, Real dp, int dim, const std::string& what) {
     if (s.type == "box")
-        return lattice(s.min, s.max, s.min, dp, dim, [](Vec3) { return true; }, what);
+        return lattice(
+            s.min, s.max, s.min, dp, dim, [](Vec3) { return true; }, what);
     if (s.type == "cylinder") {
         Vec3 lo, hi;
         for (int d = 0; d < 3; ++d) {
@@ -39,7 +40,8 @@ std::vector<Vec3> fill_shape(const io::ShapeSpec& s, Real dp, int dim, const std
     const TriangleMesh mesh = TriangleMesh::read_stl(s.file, s.scale, s.offset);
     Vec3 lo, hi;
     mesh.bounds(lo, hi);
-    return lattice(lo, hi, {}, dp, dim, [&](Vec3 p) { return mesh.contains(p); }, what);
+    return lattice(
+        lo, hi, {}, dp, dim, [&](Vec3 p) { return mesh.contains(p); }, what);
 }
 
 // Surface samples of a mesh with `layers` layers behind it (opposite to the normals).
@@ -55,8 +57,8 @@ std::vector<WallPoint> mesh_wall(const io::ShapeSpec& s, Real dp, int layers,
     const TriangleMesh mesh = TriangleMesh::read_stl(s.file, s.scale, s.offset);
     double samples = 0; // before sampling: the count must fit in memory
     for (const auto& t : mesh.triangles)
-        samples += (std::ceil(norm(t.b - t.a) / dp) + 1) * (std::ceil(norm(t.c - t.a) / dp) + 1) *
-                   layers;
+        samples +=
+            (std::ceil(norm(t.b - t.a) / dp) + 1) * (std::ceil(norm(t.c - t.a) / dp) + 1) * layers;
     if (!(samples * 64 <= memory_budget_bytes()))
         throw InputError(fmt::format("{}: sampling {} at dp = {} m needs {:.3g} points, more than "
                                      "the memory ({}) allows; coarsen dp or scale the mesh",
@@ -263,8 +265,8 @@ ParticleId build_particles(const io::CaseSpec& c, particles::ParticleSet& set,
     for (std::size_t f = 0; f < c.fluids.size(); ++f) {
         const auto& fl = c.fluids[f];
         const std::string what = fl.origin.block() + ": fluid '" + fl.name + "'";
-        auto pts = remove_near(fill_shape(fl.shape, c.dp, c.dim, what), boundary,
-                               Real(0.75) * c.dp);
+        auto pts =
+            remove_near(fill_shape(fl.shape, c.dp, c.dim, what), boundary, Real(0.75) * c.dp);
         std::erase_if(pts, [&](Vec3 p) {
             for (const auto& b : bodies)
                 if (b.inside(p)) return true;

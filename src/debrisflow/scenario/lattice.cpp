@@ -28,8 +28,8 @@ std::vector<Vec3> lattice(Vec3 lo, Vec3 hi, Vec3 origin, Real dp, int dim,
 std::vector<Vec3> tank_walls(Vec3 lo, Vec3 hi, Real dp, int dim, int layers, bool closed_top,
                              const std::string& what) {
     const Real skin = layers * dp;
-    require_lattice_within_budget(lo - Vec3{skin, skin, skin}, hi + Vec3{skin, skin, skin}, dp,
-                                  dim, what);
+    require_lattice_within_budget(lo - Vec3{skin, skin, skin}, hi + Vec3{skin, skin, skin}, dp, dim,
+                                  what);
     std::vector<Real> axis[3];
     std::vector<char> is_wall[3];
     for (int d = 0; d < 3; ++d) {

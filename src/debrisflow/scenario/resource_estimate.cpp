@@ -3,6 +3,7 @@
 #include "debrisflow/core/memory_budget.hpp"
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fmt/format.h>
 
 namespace debrisflow::scenario {
@@ -95,7 +96,8 @@ double sph_bytes_per_particle(int dim, double support_over_dp) {
     // copies (7 Real); grid arrays; half pair list: half the neighbours within support + skin
     // (1.1 support) plus 25 % capacity slack, 4 bytes each.
     const double reach = 1.1 * support_over_dp;
-    const double neighbours = dim == 3 ? 4.0 / 3.0 * pi * reach * reach * reach : pi * reach * reach;
+    const double neighbours =
+        dim == 3 ? 4.0 / 3.0 * pi * reach * reach * reach : pi * reach * reach;
     const double list = std::floor(0.5 * neighbours * 1.25) * 4;
     return 2 * (21 * sizeof(Real) + 1 + 2 + 8) + 7 * sizeof(Real) + 3 * 4 + list +
            4 * sizeof(Real) * 2;
@@ -133,8 +135,8 @@ ResourceEstimate estimate_resources(const io::CaseSpec& c) {
         }
         for (const auto& in : c.inlets)
             add("fluid entering through inlet '" + in.name + "' by the end time",
-                in.origin.at("discharge"), delivered(in.times, in.discharge, c.t_end) / cell(dp, c.dim),
-                per_particle);
+                in.origin.at("discharge"),
+                delivered(in.times, in.discharge, c.t_end) / cell(dp, c.dim), per_particle);
         for (const auto& w : c.walls) {
             const double t = w.layers * dp;
             double v = 0;
@@ -176,8 +178,8 @@ ResourceEstimate estimate_resources(const io::CaseSpec& c) {
             continue;
         }
         const std::string key = b.shape.type == "sphere" || b.shape.type == "cylinder" ? "radius"
-                                : b.shape.type == "clump"                             ? "spheres"
-                                                                                      : "max";
+                                : b.shape.type == "clump"                              ? "spheres"
+                                                                                       : "max";
         if (fluid && b.layers > 0)
             add("boundary particles of body '" + b.name + "'", b.origin.at(key),
                 shell_volume(lo, hi, b.layers * dp, c.dim) / cell(dp, c.dim), per_particle);
@@ -196,6 +198,14 @@ ResourceEstimate estimate_resources(const io::CaseSpec& c) {
         } else if (g.packing == "random") {
             n = g.count > 0 ? double(g.count) : g.mass / (rho * grain_volume(d, c));
             key = g.count > 0 ? "count" : "mass";
+        } else if (g.packing == "file") {
+            // A saved state row (10 numbers and a name) takes about 100 bytes of the file.
+            std::filesystem::path f(g.file);
+            if (f.is_relative()) f = std::filesystem::path(c.file).parent_path() / f;
+            std::error_code ec;
+            const auto bytes = std::filesystem::file_size(f, ec);
+            n = ec ? 0 : double(bytes) / 100;
+            key = "file";
         } else if (g.packing == "lattice") {
             Vec3 lo, hi;
             if (!shape_bounds(g.region, c.dim, lo, hi)) continue;

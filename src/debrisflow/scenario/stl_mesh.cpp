@@ -1,5 +1,6 @@
 #include "debrisflow/scenario/stl_mesh.hpp"
 #include "debrisflow/core/error.hpp"
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -67,6 +68,12 @@ TriangleMesh TriangleMesh::read_stl(const std::string& path, Real scale, Vec3 of
         read_ascii(path, bytes, m.triangles, scale, offset);
     }
     if (m.triangles.empty()) throw InputError(path + ": mesh has no triangles");
+    for (std::size_t k = 0; k < m.triangles.size(); ++k)
+        for (const Vec3& v : {m.triangles[k].a, m.triangles[k].b, m.triangles[k].c})
+            if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+                throw InputError(path + ": facet " + std::to_string(k) +
+                                 " has a vertex that is not a finite number (after scale and "
+                                 "offset)");
     return m;
 }
 
