@@ -12,5 +12,5 @@ cmake -S . -B build-fuzz -DDEBRISFLOW_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++ \
 cmake --build build-fuzz --target case_check_fuzz -j2
 tests/fuzz/seed_corpus.sh build-fuzz/corpus
 cd build-fuzz
-./case_check_fuzz corpus -dict=../tests/fuzz/case.dict -max_total_time="$seconds" -timeout=30 \
+./case_check_fuzz corpus -dict=../tests/fuzz/case.dict -max_total_time="$seconds" -timeout=120 \
     -rss_limit_mb=2048 -max_len=16384 -print_final_stats=1 "$@"
