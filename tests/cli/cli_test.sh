@@ -50,7 +50,8 @@ grep -q "holds the results of an earlier run" "$out/reuse.txt" || fail "reuse me
 
 # Fluid thrown upwards out of the domain: the run must stop (exit 3) with a message saying
 # where, keeping summary.json.
-"$exe" run "$demo" --out "$out/unstable" --set fluid.0.velocity=[0,5] --set time.end=0.5 --quiet \
+"$exe" run "$demo" --out "$out/unstable" --set fluid.0.velocity=[0,5] --set time.end=0.5 \
+    --set domain.exit=stop --quiet \
     > "$out/unstable.txt" 2>&1; rc=$?
 [ $rc -eq 3 ] || fail "unstable run: exit $rc, expected 3"
 grep -q "left the domain" "$out/unstable.txt" || fail "instability message: $(cat "$out/unstable.txt")"
@@ -58,6 +59,25 @@ grep -q '"status": "unstable"' "$out/unstable/summary.json" || fail "unstable su
 /usr/bin/python3 -c "import json,sys; json.load(open(sys.argv[1]))" "$out/unstable/summary.json" \
     || fail "the unstable run's summary.json is not valid JSON"
 [ -s "$out/unstable/vtk/particles.pvd" ] || fail "unstable run lost its output"
+# The same with the default domain.exit = "remove": the fluid that leaves is removed and counted
+# by face (all of it through the top, z+), with a warning once over 1 % of the fluid's mass.
+{ cat "$demo"; printf '\n[[probe]]\nname = "lost"\ntype = "domain_exit"\nevery = 0.01\n'; } \
+    > "$out/leaving.toml"
+"$exe" run "$out/leaving.toml" --out "$out/leaving" --set fluid.0.velocity=[0,5] \
+    --set time.end=0.12 --quiet > "$out/leaving.txt" 2>&1 \
+    || fail "run with fluid leaving the domain: $(tail -3 "$out/leaving.txt")"
+grep -q "WARNING: .*fluid particles that left the domain" "$out/leaving/log.txt" \
+    || fail "no lost-mass warning: $(cat "$out/leaving/log.txt")"
+/usr/bin/python3 - "$out/leaving" <<'PY' || fail "left_domain tally"
+import csv, json, sys
+s = json.load(open(sys.argv[1] + "/summary.json"))
+lost = s["left_domain"]["fluid"]
+assert s["left_domain"]["policy"] == "remove", s["left_domain"]
+assert lost["count"] > 0 and lost["faces"]["zmax"]["count"] == lost["count"], lost
+assert s["particles_end"]["fluid"] == s["particles"]["fluid"] - lost["count"], s
+rows = list(csv.reader(open(sys.argv[1] + "/probes/lost.csv")))
+assert rows[0][1] == "fluid_count [-]" and int(float(rows[-1][1])) == lost["count"], rows[-1]
+PY
 # SIGTERM (or Ctrl-C) during a run: it stops after the current step (exit 130), keeping the
 # probes, frames and a summary that says so.
 "$exe" run "$demo" --out "$out/stopped" --set time.end=60 --threads 1 --quiet \

@@ -82,3 +82,53 @@ TEST(DemLaws, ConstantTorqueRollingDecelerates) {
     std::printf("constant-torque rolling: a = %.5f m/s2 (expected %.5f)\n", a, expected);
     EXPECT_NEAR(a / expected, 1, 0.005);
 }
+
+namespace {
+
+// The automatic DEM step of one grain of inertia factor `beta` (I = beta m r^2) on a plane,
+// linear law with kt = ratio * kn.
+time::DtLimit linear_step(Real beta, Real ratio) {
+    dem::Material m;
+    m.name = "glass";
+    m.density = 2500;
+    m.kn = 1e5;
+    m.kt = ratio * m.kn;
+    m.restitution = 0.5;
+    DemRig rig;
+    const Real r = 0.005, mass = DemRig::sphere_mass(m.density, r);
+    rig.grains.add({0, 0, r}, {}, r, mass, beta * mass * r * r, 0);
+    rig.add_plane("floor", {0, 0, 0}, {0, 0, 1}, 0);
+    dem::DemParams p;
+    p.safety = 0.1;
+    rig.start(p, {m}, {-1, -1, -1}, {1, 1, 1});
+    return rig.solver->automatic_dt();
+}
+
+} // namespace
+
+// The stable step covers every mode of a contact, not only the normal one: with k_t = k_n the
+// tangential spring acts on the contact point's compliance 1/m + r^2/I, so its frequency is
+// sqrt(1 + 1/beta) times the normal one: sqrt(3.5) for a sphere (beta = 2/5), sqrt(3) for a
+// disc (beta = 1/2) (closed form of the two-mode oscillator). The step is then
+// safety x pi / omega_t (undamped), taken for two such grains meeting (m* = m/2, the stiffest
+// pair; the wall pair is sqrt(2) slower). With k_t = 2/7 k_n (sphere) the tangential frequency
+// equals the normal one (undamped time pi / omega_n still limits); with k_t = k_n / 10 the damped
+// normal contact time does. Tolerance 1e-12 (exact formulas).
+TEST(DemLaws, StableStepCoversTheTangentialRotationalMode) {
+    const Real pi = 3.14159265358979323846, kn = 1e5;
+    const Real mass = DemRig::sphere_mass(2500, 0.005);
+    for (const auto& [beta, factor] : {std::pair{0.4, 3.5}, std::pair{0.5, 3.0}}) {
+        const auto lim = linear_step(beta, 1);
+        const Real expected = 0.1 * pi / std::sqrt(factor * kn / (mass / 2));
+        EXPECT_NEAR(lim.dt / expected, 1, 1e-12) << "beta " << beta << ": " << lim.limiter;
+        EXPECT_NE(lim.limiter.find("tangential-rotational"), std::string::npos) << lim.limiter;
+    }
+    const auto equal = linear_step(0.4, 2.0 / 7.0);
+    EXPECT_NEAR(equal.dt / (0.1 * pi / std::sqrt(kn / (mass / 2))), 1, 1e-12) << equal.limiter;
+    const auto normal = linear_step(0.4, 0.1);
+    const Real zeta = dem::linear_damping_ratio(0.5);
+    EXPECT_NEAR(normal.dt / (0.1 * pi / (std::sqrt(kn / (mass / 2)) * std::sqrt(1 - zeta * zeta))),
+                1, 1e-12)
+        << normal.limiter;
+    EXPECT_NE(normal.limiter.find("linear contact time"), std::string::npos) << normal.limiter;
+}

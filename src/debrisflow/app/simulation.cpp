@@ -17,7 +17,8 @@
 
 namespace debrisflow::app {
 
-Simulation::Simulation(io::CaseSpec spec) : spec_(std::move(spec)) {
+Simulation::Simulation(io::CaseSpec spec)
+    : spec_(std::move(spec)), domain_exit_(spec_.domain_exit, spec_.domain, spec_.dim) {
     // Nothing is allocated for a case that cannot fit in memory (or --max-memory).
     scenario::require_within_budget(scenario::estimate_resources(spec_));
     std::vector<scenario::BuiltBody> bodies;
@@ -316,6 +317,13 @@ io::RunReport Simulation::run(const RunOptions& opt) {
                                           out->name(), out->bodies_removed(), out->body_mass()));
             }
         });
+    // Fluid particles and grains that left the domain go (domain.exit = "remove"), after the
+    // outlets and before the neighbour search and the health checks.
+    if (domain_exit_.removes())
+        integ.add_hook(time::Hook::after_integration, [this](const time::StepInfo& s) {
+            const std::string note = domain_exit_.apply(solver_.get(), dem_.get(), s.t);
+            if (!note.empty()) log_.line(note);
+        });
     for (auto& p : probes_) {
         probes::Probe* raw = p.get();
         integ.add_observer(
@@ -374,6 +382,8 @@ io::RunReport Simulation::run(const RunOptions& opt) {
         if (rigid_) report.bodies = long(rigid_->bodies().size()); // rock feeds add bodies
         report.fluid_end = set_.count(particles::Kind::fluid);
         report.grains_end = grains_.size();
+        report.fluid_exit = domain_exit_.fluid();
+        report.grain_exit = domain_exit_.grains();
         if (solver_) {
             report.pair_list_builds = solver_->list_builds();
             report.pairs = solver_->pair_list().pairs();

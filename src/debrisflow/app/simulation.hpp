@@ -5,6 +5,7 @@
 #include "debrisflow/coupling/sph_fem.hpp"
 #include "debrisflow/dem/dem_solver.hpp"
 #include "debrisflow/fem/fem_solver.hpp"
+#include "debrisflow/flow/domain_exit.hpp"
 #include "debrisflow/flow/fluid_inlet.hpp"
 #include "debrisflow/flow/grain_feed.hpp"
 #include "debrisflow/flow/outlet.hpp"
@@ -63,7 +64,7 @@ private:
     // mean contact force) drops below dem.settle_ratio; then zeroes grain velocities.
     void settle_grains();
     probes::ProbeContext probe_context() {
-        return {solver_.get(), dem_.get(), rigid_.get(), fem_.get()};
+        return {solver_.get(), dem_.get(), rigid_.get(), fem_.get(), &domain_exit_};
     }
     // World positions, velocities, radii and body index of the bodies' contact samples (or
     // vertices) for the VTK output.
@@ -84,6 +85,7 @@ private:
     bool settled_ = false;
     std::vector<std::unique_ptr<flow::FluidInlet>> inlets_;
     std::vector<std::unique_ptr<flow::Outlet>> outlets_;
+    flow::DomainExit domain_exit_;
     std::vector<std::unique_ptr<flow::GrainFeed>> feeds_;
     std::vector<std::unique_ptr<flow::RockFeed>> rock_feeds_;
     std::vector<std::unique_ptr<probes::Probe>> probes_;

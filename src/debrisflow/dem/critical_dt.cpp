@@ -14,12 +14,18 @@ time::DtLimit critical_dt(const GrainSet& grains, const std::vector<int>& wall_m
     const int nm = int(materials.size());
     if (n == 0) return {std::numeric_limits<Real>::max(), "no grains"};
     std::vector<Real> mmin(std::size_t(nm), std::numeric_limits<Real>::max()), rmin = mmin;
+    // Per material, the largest tangential compliance of a contact point, 1/m + r^2/I (3.5/m
+    // for a sphere, 3/m for a disc), and the largest rotational one, 1/I.
+    std::vector<Real> ct(std::size_t(nm), 0), cr = ct;
     Real vmax = 0;
     for (Index i = 0; i < n; ++i) {
-        const std::size_t m = grains.material[std::size_t(i)];
-        mmin[m] = std::min(mmin[m], grains.mass[std::size_t(i)]);
-        rmin[m] = std::min(rmin[m], grains.radius[std::size_t(i)]);
-        vmax = std::max(vmax, norm(grains.vel[std::size_t(i)]));
+        const std::size_t k = std::size_t(i), m = grains.material[k];
+        mmin[m] = std::min(mmin[m], grains.mass[k]);
+        rmin[m] = std::min(rmin[m], grains.radius[k]);
+        ct[m] = std::max(ct[m], grains.inv_mass[k] +
+                                    grains.radius[k] * grains.radius[k] * grains.inv_inertia[k]);
+        cr[m] = std::max(cr[m], grains.inv_inertia[k]);
+        vmax = std::max(vmax, norm(grains.vel[k]));
     }
     Real vref = params.reference_velocity;
     if (vref <= 0) {
@@ -48,17 +54,45 @@ time::DtLimit critical_dt(const GrainSet& grains, const std::vector<int>& wall_m
             const Real reff = wall ? r1 : r1 * rmin[std::size_t(b)] / (r1 + rmin[std::size_t(b)]);
             const std::string pair =
                 ma.name + "-" + (wall ? "wall" : materials[std::size_t(b)].name);
+            // The contact's other modes, relative to its normal one (frequency ratios): the
+            // tangential spring k_t acting on the contact point's compliance 1/m + r^2/I of
+            // each side, and the EPSD rolling spring k_r = 2.25 k_n mu_r^2 R*^2 acting on 1/I
+            // of each side (Iwashita & Oda 1998; Ai et al. 2011, eq. 13).
+            const Real c_t = ct[std::size_t(a)] + (wall ? 0 : ct[std::size_t(b)]);
+            const Real c_r = cr[std::size_t(a)] + (wall ? 0 : cr[std::size_t(b)]);
+            const bool epsd = p.rolling == RollingId::epsd && p.mu_roll > 0;
+            const Real rolling_ratio =
+                epsd ? std::sqrt(Real(2.25) * p.mu_roll * p.mu_roll * reff * reff * c_r * meff) : 0;
+            // tc_normal: the undamped normal contact time; the other modes' times are taken
+            // undamped too (their damping ratios differ from the normal one, and undamped is the
+            // conservative bound).
+            auto other_modes = [&](Real tc_normal, Real kt_over_kn, const std::string& what) {
+                const Real tangential_ratio = std::sqrt(kt_over_kn * c_t * meff);
+                if (tangential_ratio > 0)
+                    consider(safety * tc_normal / tangential_ratio,
+                             fmt::format("{} x tangential-rotational {} ({})", safety, what, pair));
+                if (rolling_ratio > 0)
+                    consider(safety * tc_normal / rolling_ratio,
+                             fmt::format("{} x rolling {} ({})", safety, what, pair));
+            };
             if (p.law == LawId::linear) {
                 // Contact duration of the damped linear oscillator: pi / (w0 sqrt(1 - zeta^2)).
-                const Real w0 = std::sqrt(std::max(p.kn, p.kt) / meff);
-                consider(safety * pi / (w0 * std::sqrt(1 - p.damping * p.damping)),
-                         fmt::format("{} x linear contact time ({})", safety, pair));
+                const Real w0 = std::sqrt(p.kn / meff);
+                const Real tc = pi / (w0 * std::sqrt(1 - p.damping * p.damping));
+                consider(safety * tc, fmt::format("{} x linear contact time ({})", safety, pair));
+                other_modes(pi / w0, p.kt / p.kn, "contact time");
             } else {
                 // Hertz contact time 2.868 (m*^2 / (E*^2 R* v))^(1/5) (Johnson 1985).
                 const Real tc =
                     2.868 * std::pow(meff * meff / (p.e_star * p.e_star * reff * vref), Real(0.2));
                 consider(safety * tc, fmt::format("{} x Hertz contact time at {:.3g} m/s ({})",
                                                   safety, vref, pair));
+                // Mindlin k_t = 8 G* sqrt(R* d) against the normal tangent 2 E* sqrt(R* d);
+                // DCDEM k_t = 2/7 (4/3) E* sqrt(R* d): 4/21 of that tangent.
+                const Real kt_over_kn = p.law == LawId::hertz_mindlin
+                                            ? (p.e_star > 0 ? 4 * p.g_star / p.e_star : 0)
+                                            : Real(4) / 21;
+                other_modes(tc, kt_over_kn, "Hertz contact time");
                 // Rayleigh time pi r sqrt(rho/G) / (0.1631 nu + 0.8766) of the grain material.
                 if (!ma.rigid && ma.youngs_modulus > 0) {
                     const Real g = ma.youngs_modulus / (2 * (1 + ma.poisson));

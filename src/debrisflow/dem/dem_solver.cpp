@@ -532,6 +532,8 @@ void DemSolver::remove_grains(const std::vector<std::uint8_t>& keep) {
     if (fluid_) fluid_->select(kept);
     for (auto* slots : {&grain_slots_, &wall_slots_, &obstacle_slots_}) slots->remap(kept);
     obstacle_builds_seen_ = -1;
+    bad_ = false;
+    for (Index i = 0; i < grains_.size() && !bad_; ++i) bad_ = escaped(i);
     rebuild();
 }
 
@@ -593,6 +595,18 @@ Real DemSolver::unbalanced_ratio() const {
     return (sum / Real(n)) / mean_contact_force();
 }
 
+bool DemSolver::escaped(Index i) const {
+    const std::size_t k = std::size_t(i);
+    const Vec3 p = grains_.pos[k], v = grains_.vel[k];
+    const bool nan = !std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) ||
+                     !std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z);
+    bool out = false;
+    for (int d = 0; d < 3; ++d)
+        if (!(params_.dim == 2 && d == 1) && !domain_.periodic[d])
+            out = out || !(p[d] >= domain_.lo[d] && p[d] <= domain_.hi[d]);
+    return nan || out;
+}
+
 void DemSolver::check_health(Real t) const {
     if (!bad_) return;
     for (Index i = 0; i < grains_.size(); ++i) {
@@ -600,18 +614,15 @@ void DemSolver::check_health(Real t) const {
         const Vec3 p = grains_.pos[k], v = grains_.vel[k];
         const bool nan = !std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) ||
                          !std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z);
-        bool out = false;
-        for (int d = 0; d < 3; ++d)
-            if (!(params_.dim == 2 && d == 1) && !domain_.periodic[d])
-                out = out || !(p[d] >= domain_.lo[d] && p[d] <= domain_.hi[d]);
-        if (nan || out)
+        if (escaped(i))
             throw InstabilityError(fmt::format(
                 "grain {} {} at t = {:.6g} s: position ({:.4g}, {:.4g}, {:.4g}) m, velocity "
                 "({:.4g}, {:.4g}, {:.4g}) m/s; domain [{:.4g}, {:.4g}, {:.4g}]-[{:.4g}, {:.4g}, "
-                "{:.4g}] m. Check the time step (dem.dt, dem.safety) and the walls",
+                "{:.4g}] m. Check the time step (dem.dt, dem.safety) and the walls{}",
                 grains_.id[k], nan ? "has a non-finite state" : "left the domain", t, p.x, p.y, p.z,
                 v.x, v.y, v.z, domain_.lo.x, domain_.lo.y, domain_.lo.z, domain_.hi.x, domain_.hi.y,
-                domain_.hi.z));
+                domain_.hi.z,
+                nan ? "" : " (domain.exit = \"remove\" takes grains that leave out of the run)"));
     }
     throw InstabilityError(fmt::format("DEM state became non-finite at t = {:.6g} s", t));
 }

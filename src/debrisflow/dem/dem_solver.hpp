@@ -51,6 +51,9 @@ public:
     void remove_wall(int wall);
     // Removes the grains with keep[i] == 0 (an outlet); contact history of the rest is kept.
     void remove_grains(const std::vector<std::uint8_t>& keep);
+    // True when a step left a grain outside the domain or with a non-finite state (then
+    // check_health stops the run unless such grains are removed first).
+    bool may_have_left() const { return bad_; }
     // Call after grains were appended to the GrainSet (a feed): they join the contact search.
     void grains_added(Index old_count);
     // Lowers the automatic step so that it also holds for the grains in `prototypes` (sizes a
@@ -64,6 +67,8 @@ public:
         fluid_ = f;
         if (f) f->resize(std::size_t(grains_.size()));
     }
+    // Changes gravity from the next step on (a tilting table; the step is not recomputed).
+    void set_gravity(Vec3 g) { params_.gravity = g; }
     // Sets every grain's velocity and spin to zero (end of settling).
     void stop_grains();
 
@@ -96,6 +101,8 @@ private:
     void forces(Real half_kick, bool collect_obstacles = false);
     // Candidate grain-obstacle pairs within reach (rebuilt when either side moved).
     void build_obstacle_slots();
+    // Whether grain i is outside the (non-periodic) domain or not finite.
+    bool escaped(Index i) const;
 
     DemParams params_;
     GrainSet& grains_;

@@ -134,7 +134,7 @@ void read_sph(const ConfigTable& t, CaseSpec& c) {
     t.finish();
 }
 
-sph::Domain read_domain(const ConfigTable& t, int dim) {
+sph::Domain read_domain(const ConfigTable& t, int dim, DomainExitSpec& exit) {
     sph::Domain d;
     d.lo = t.vec3("min", dim);
     d.hi = t.vec3("max", dim);
@@ -158,6 +158,10 @@ sph::Domain read_domain(const ConfigTable& t, int dim) {
                        "expected a list of \"x\", \"y\" (3D) or \"z\", got \"" + s + "\"");
         }
     }
+    exit.policy = t.choice("exit", {"remove", "stop"}, "remove");
+    exit.warn_fraction = t.real("exit_warn_fraction", 0.01);
+    if (!(exit.warn_fraction >= 0 && exit.warn_fraction <= 1))
+        t.fail("exit_warn_fraction", "must be in [0, 1] (a fraction of the phase's mass)");
     t.finish();
     return d;
 }
@@ -179,7 +183,7 @@ ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
     p.type = t.choice("type", {"pressure", "gauge", "velocity", "front", "wall_force", "section",
                                "kinetic_energy", "runup", "mass_flux", "body", "discharge",
                                "trapping", "deposit", "flow_section", "fluid_runup", "pressure_map",
-                               "fem_displacement", "fem_force", "fem_face_load"});
+                               "fem_displacement", "fem_force", "fem_face_load", "domain_exit"});
     p.every = t.positive("every", 0.001);
     if (c.t_end / p.every > 1e8)
         t.fail("every", fmt::format("would write {:.3g} rows over time.end = {} s (at most 1e8)",
@@ -270,6 +274,10 @@ ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
         p.normal = t.vec3("normal", c.dim);
         if (norm(p.normal) == 0) t.fail("normal", "must be a non-zero vector");
         p.normal = (1 / norm(p.normal)) * p.normal;
+    } else if (p.type == "domain_exit") {
+        if (c.domain_exit.policy != "remove")
+            t.fail("type", "a domain_exit probe counts what domain.exit = \"remove\" removes; "
+                           "domain.exit is \"stop\"");
     } else if (p.type == "front") {
         const std::string a = t.choice("axis", {"x", "y", "z"}, "x");
         p.axis = a == "x" ? 0 : (a == "y" ? 1 : 2);
@@ -396,7 +404,7 @@ CaseSpec read_case_text(const std::string& text, const std::string& path,
     auto domain = root.table("domain");
     if (!domain) root.fail("domain", "missing required table [domain] with min and max");
     c.domain_origin = domain->origin();
-    c.domain = read_domain(*domain, c.dim);
+    c.domain = read_domain(*domain, c.dim, c.domain_exit);
 
     auto fluid_tables = root.tables("fluid");
     auto sph = root.table("sph");

@@ -239,6 +239,16 @@ struct FemSpec {
     std::vector<FemLoadSpec> loads;
 };
 
+// What happens to a fluid particle or a grain whose centre leaves the (non-periodic) domain:
+// "remove" takes it out of the run and counts it by phase and by the face it crossed (as
+// DualSPHysics does with its excluded particles); "stop" ends the run with the particle's
+// state. A non-finite state always stops the run (flow/domain_exit.hpp).
+struct DomainExitSpec {
+    std::string policy = "remove";
+    // Warn once when the mass a phase lost exceeds this fraction of all it ever held.
+    Real warn_fraction = 0.01;
+};
+
 struct CaseSpec {
     std::string file;
     std::string name;
@@ -253,6 +263,7 @@ struct CaseSpec {
     sph::SphParams sph;
     bool fluid_gravity = true; // [sph] fluid_gravity: false = no hydrostatic field in the fluid
     sph::Domain domain;
+    DomainExitSpec domain_exit;
     Real c0_coefficient = 0, reference_depth = 0; // when c0 = coefficient * sqrt(g H)
     std::vector<FluidSpec> fluids;
     bool has_dem = false;

@@ -1,4 +1,5 @@
 #pragma once
+#include "debrisflow/flow/domain_exit.hpp"
 #include "debrisflow/io/case_spec.hpp"
 #include "debrisflow/probes/design_formulas.hpp"
 #include "debrisflow/probes/probe.hpp"
@@ -26,6 +27,8 @@ struct RunReport {
     // FEM solids: nodes, elements, eroded elements, critical step and FEM steps taken.
     long fem_nodes = 0, fem_elements = 0, fem_eroded = 0, fem_substeps = 0;
     double fem_dt = 0;
+    // What left the domain and was removed (domain.exit = "remove"), by phase and face.
+    flow::ExitTally fluid_exit, grain_exit;
 };
 
 // summary.json: counts, steps, times, throughput, timing breakdown and probe peaks/finals.

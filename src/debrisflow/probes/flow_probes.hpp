@@ -1,4 +1,5 @@
 #pragma once
+#include "debrisflow/flow/domain_exit.hpp"
 #include "debrisflow/flow/fluid_inlet.hpp"
 #include "debrisflow/flow/grain_feed.hpp"
 #include "debrisflow/flow/outlet.hpp"
@@ -84,6 +85,35 @@ public:
 private:
     const flow::SolidFeed& feed_;
     std::string pieces_;
+};
+
+// probes/<name>.csv of a `domain_exit` probe: what has left the domain and been removed
+// (domain.exit = "remove") so far, by phase: count and mass, then the count through each face.
+class DomainExitProbe : public Probe {
+public:
+    DomainExitProbe(const io::ProbeSpec& s, bool per_metre)
+        : Probe(s.name, s.every), unit_(per_metre ? "/m" : "") {}
+    std::vector<std::string> columns() const override {
+        std::vector<std::string> c = {"fluid_count [-]", "fluid_mass [kg" + unit_ + "]",
+                                      "grain_count [-]", "grain_mass [kg]"};
+        for (const char* phase : {"fluid", "grain"})
+            for (const char* face : flow::face_names)
+                c.push_back(std::string(phase) + "_" + face + " [-]");
+        return c;
+    }
+    std::vector<Real> sample(Real, const ProbeContext& ctx) override {
+        flow::ExitTally none;
+        const auto& f = ctx.domain_exit ? ctx.domain_exit->fluid() : none;
+        const auto& g = ctx.domain_exit ? ctx.domain_exit->grains() : none;
+        std::vector<Real> v = {Real(f.total_count()), f.total_mass(), Real(g.total_count()),
+                               g.total_mass()};
+        for (const auto* t : {&f, &g})
+            for (long n : t->count) v.push_back(Real(n));
+        return v;
+    }
+
+private:
+    std::string unit_;
 };
 
 } // namespace debrisflow::probes

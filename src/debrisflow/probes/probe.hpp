@@ -15,16 +15,20 @@ class BodySolver;
 namespace debrisflow::fem {
 class FemSolver;
 }
+namespace debrisflow::flow {
+class DomainExit;
+}
 
 namespace debrisflow::probes {
 
 // What a probe may look at: the fluid, the grains, the rigid bodies, the FEM solids (null when
-// absent).
+// absent) and the tally of what left the domain.
 struct ProbeContext {
     const sph::SphSolver* sph = nullptr;
     dem::DemSolver* dem = nullptr;
     const rigid::BodySolver* rigid = nullptr;
     const fem::FemSolver* fem = nullptr;
+    const flow::DomainExit* domain_exit = nullptr; // what left the domain
 };
 
 // A measurement taken on a schedule and written to probes/<name>.csv (first column time [s]).

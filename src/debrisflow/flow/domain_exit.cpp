@@ -1,0 +1,119 @@
+#include "debrisflow/flow/domain_exit.hpp"
+#include "debrisflow/dem/dem_solver.hpp"
+#include "debrisflow/exec/parallel.hpp"
+#include <cmath>
+#include <fmt/format.h>
+
+namespace debrisflow::flow {
+
+const std::array<const char*, 6> face_names = {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"};
+
+long ExitTally::total_count() const {
+    long n = 0;
+    for (long c : count) n += c;
+    return n;
+}
+
+Real ExitTally::total_mass() const {
+    Real m = 0;
+    for (Real c : mass) m += c;
+    return m;
+}
+
+int DomainExit::face_of(Vec3 p) const {
+    // The face crossed furthest, relative to the domain's extent in that direction.
+    int face = -1;
+    Real worst = 0;
+    for (int d = 0; d < 3; ++d) {
+        if (domain_.periodic[std::size_t(d)] || (dim_ == 2 && d == 1)) continue;
+        const Real extent = domain_.hi[d] - domain_.lo[d];
+        const Real below = (domain_.lo[d] - p[d]) / extent, above = (p[d] - domain_.hi[d]) / extent;
+        if (below > worst) worst = below, face = 2 * d;
+        if (above > worst) worst = above, face = 2 * d + 1;
+    }
+    return face;
+}
+
+std::string DomainExit::note(const char* phase, const char* unit, ExitTally& tally,
+                             const std::array<long, 6>& before, Real held, bool& warned,
+                             Real t) const {
+    std::string out;
+    for (std::size_t f = 0; f < 6; ++f)
+        if (before[f] == 0 && tally.count[f] > 0)
+            out += fmt::format("{}t = {:.6g} s: {} {} left the domain through its {} face: "
+                               "removed (domain.exit = \"remove\"; further ones are counted in "
+                               "summary.json, not logged)",
+                               out.empty() ? "" : "\n", t, tally.count[f], phase, face_names[f]);
+    const Real lost = tally.total_mass();
+    if (!warned && held > 0 && lost > spec_.warn_fraction * held) {
+        warned = true;
+        out += fmt::format("{}WARNING: t = {:.6g} s: the {} that left the domain ({} of them, "
+                           "{:.4g} {}) exceed {:.3g} % of the mass of the {} ({:.4g} {}); check the "
+                           "domain, the walls and the time step",
+                           out.empty() ? "" : "\n", t, phase, tally.total_count(), lost, unit,
+                           100 * spec_.warn_fraction, phase, held, unit);
+    }
+    return out;
+}
+
+std::string DomainExit::apply(sph::SphSolver* fluid, dem::DemSolver* grains, Real t) {
+    if (!removes()) return "";
+    std::string log;
+    auto join = [&](const std::string& s) {
+        if (!s.empty()) log += (log.empty() ? "" : "\n") + s;
+    };
+    auto finite = [](Vec3 p) {
+        return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+    };
+    if (fluid) {
+        auto& s = fluid->particles();
+        const Index n = s.size();
+        const auto fluid_kind = std::uint8_t(particles::Kind::fluid);
+        const Real any = exec::max_of(n, [&](Index i) {
+            const Vec3 p{s.x[i], s.y[i], s.z[i]};
+            return s.kind[i] == fluid_kind && finite(p) && face_of(p) >= 0 ? Real(1) : Real(0);
+        });
+        if (any > 0) {
+            const auto before = fluid_.count;
+            std::vector<std::uint8_t> keep(std::size_t(n), 1);
+            Real held = fluid_.total_mass(); // all the fluid ever held: lost before + in the set
+            for (Index i = 0; i < n; ++i) {
+                if (s.kind[i] != fluid_kind) continue;
+                held += s.mass[i];
+                const Vec3 p{s.x[i], s.y[i], s.z[i]};
+                const int f = finite(p) ? face_of(p) : -1;
+                if (f < 0) continue;
+                keep[std::size_t(i)] = 0;
+                ++fluid_.count[std::size_t(f)];
+                fluid_.mass[std::size_t(f)] += s.mass[i];
+            }
+            fluid->remove_particles(keep);
+            join(note("fluid particles", dim_ == 2 ? "kg/m" : "kg", fluid_, before, held, fluid_warned_, t));
+        }
+    }
+    if (grains && grains->may_have_left()) {
+        auto& g = grains->grains();
+        const Index n = g.size();
+        const auto before = grains_.count;
+        std::vector<std::uint8_t> keep(std::size_t(n), 1);
+        Real held = grains_.total_mass(); // all the grains ever held: lost before + in the set
+        bool any = false;
+        for (Index i = 0; i < n; ++i) {
+            const std::size_t k = std::size_t(i);
+            held += g.mass[k];
+            const int f = finite(g.pos[k]) ? face_of(g.pos[k]) : -1;
+            if (f < 0) continue;
+            keep[k] = 0;
+            any = true;
+            ++grains_.count[std::size_t(f)];
+            grains_.mass[std::size_t(f)] += g.mass[k];
+        }
+        if (any) {
+            grains->remove_grains(keep);
+            join(note("grains", "kg", grains_, before, held, grains_warned_, t));
+        }
+    }
+    return log;
+}
+
+} // namespace debrisflow::flow
