@@ -86,8 +86,7 @@ TEST(DomainExit, GrainsThatLeaveAreRemovedAndCountedByFace) {
 TEST(DomainExit, StopPolicyStopsTheRunNamingTheGrain) {
     std::string text = leaving_grains;
     text.replace(text.find("[[probe]]"), std::string::npos, "");
-    app::Simulation sim(
-        test::case_from_toml("leaving_stop", text, {"domain.exit=stop"}));
+    app::Simulation sim(test::case_from_toml("leaving_stop", text, {"domain.exit=stop"}));
     app::RunOptions opt;
     opt.quiet = true;
     try {
@@ -101,4 +100,23 @@ TEST(DomainExit, StopPolicyStopsTheRunNamingTheGrain) {
 TEST(DomainExit, AProbeNeedsTheRemovePolicy) {
     EXPECT_THROW(test::case_from_toml("leaving_probe", leaving_grains, {"domain.exit=stop"}),
                  InputError);
+}
+
+// A clump leaves whole as soon as one member is out: every member is removed and counted at the
+// face that member crossed, so the tally's mass is the clump's.
+TEST(DomainExit, AClumpLeavesWhole) {
+    std::string text = leaving_grains;
+    text.replace(text.find("[[grains]]\nname = \"left\""), std::string::npos,
+                 "[[grains]]\nname = \"pair\"\nmaterial = \"glass\"\npacking = \"single\"\n"
+                 "position = [0.08, 0, 0.004]\ndiameter = 0.006\nvelocity = [1, 0, 0]\n"
+                 "clump = [[-1, 0, 0, 1], [1, 0, 0, 1]]\norientation = \"aligned\"\n");
+    app::Simulation sim(test::case_from_toml("leaving_clump", text));
+    const Real mass = sim.grains().grains().clumps.total_mass();
+    app::RunOptions opt;
+    opt.quiet = true;
+    const auto report = sim.run(opt);
+    EXPECT_EQ(sim.grains().grains().size(), 0);
+    EXPECT_EQ(sim.grains().grains().clumps.size(), 0);
+    EXPECT_EQ(report.grain_exit.count[1], 2); // both members, through xmax
+    EXPECT_NEAR(report.grain_exit.total_mass() / mass, 1, 1e-12);
 }

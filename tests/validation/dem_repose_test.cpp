@@ -53,9 +53,9 @@ Real departure_angle(Real mu_roll, const std::string& rolling, Real beta0_deg, R
     sph::Domain d;
     d.lo = {-0.1, 0, -0.1};
     d.hi = {0.1, 0, 0.1};
-    rig.solver = std::make_unique<dem::DemSolver>(p, rig.grains, rig.walls,
-                                                  std::vector<dem::Material>{m},
-                                                  std::vector<dem::PairOverride>{}, d);
+    rig.solver =
+        std::make_unique<dem::DemSolver>(p, rig.grains, rig.walls, std::vector<dem::Material>{m},
+                                         std::vector<dem::PairOverride>{}, d);
     rig.solver->attach_obstacles(&base);
     rig.solver->update_neighbors(true);
     rig.solver->compute_forces();
@@ -83,8 +83,8 @@ TEST(DemRepose, DiscInAPocketLeavesAtTheClosedFormAngle) {
         Real mu_roll;
         const char* rolling;
     };
-    for (const Case c : {Case{0, "none"}, Case{0.3, "epsd"}, Case{0.3, "constant_torque"},
-                         Case{0.6, "epsd"}}) {
+    for (const Case c :
+         {Case{0, "none"}, Case{0.3, "epsd"}, Case{0.3, "constant_torque"}, Case{0.6, "epsd"}}) {
         const Real critical = 30 + std::atan(c.mu_roll / 2) * 180 / pi;
         const Real beta = departure_angle(c.mu_roll, c.rolling, critical - 4, 2.5);
         std::printf("%s mu_r %.2f: leaves at %.2f deg (closed form %.2f deg)\n", c.rolling,

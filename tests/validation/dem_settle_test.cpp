@@ -12,10 +12,10 @@ using namespace debrisflow;
 
 namespace {
 
-std::string packing_case(int dim, int count) {
+std::string packing_case(int dim, int count, bool dimers) {
     const bool plane = dim == 2;
-    std::string s = "name = \"settle_" + std::to_string(dim) + "d\"\ndimensions = " +
-                    std::to_string(dim) + "\n";
+    std::string s = "name = \"settle_" + std::to_string(dim) +
+                    "d\"\ndimensions = " + std::to_string(dim) + "\n";
     s += R"(
 [time]
 end = 1e-4
@@ -58,6 +58,7 @@ normal = [0, 0, 1]
          "\nseed = 3\n";
     s += "size = {distribution = \"lognormal\", d50 = 0.005, sigma = 0.1, min = 0.004, max = "
          "0.006}\n";
+    if (dimers) s += "clump = [[-1, 0, 0, 1], [1, 0, 0, 1]]\n";
     s += plane ? "region = {shape = \"box\", min = [0, 0, 0], max = [0.1, 0, 0.3]}\n"
                : "region = {shape = \"box\", min = [0, 0, 0], max = [0.06, 0.06, 0.3]}\n";
     return s;
@@ -69,15 +70,20 @@ normal = [0, 0, 1]
 // dem.settle_max_time" otherwise) and the packing is still in equilibrium after the short run:
 // ratio < 0.01, the criterion itself (no tolerance).
 TEST(DemSettle, DiscsAndSpheresWithStiffTangentialSpringsReachTheEquilibriumRatio) {
-    for (const auto& [dim, count] : {std::pair{2, 500}, std::pair{3, 500}}) {
-        app::Simulation sim(test::case_from_toml("settle", packing_case(dim, count)));
+    struct Packing {
+        int dim, count;
+        bool dimers;
+    };
+    for (const auto& [dim, count, dimers] :
+         {Packing{2, 500, false}, Packing{3, 500, false}, Packing{2, 250, true}}) {
+        app::Simulation sim(test::case_from_toml("settle", packing_case(dim, count, dimers)));
         app::RunOptions opt;
         opt.quiet = true;
         ASSERT_NO_THROW(sim.run(opt)) << dim << "D";
         const Real ratio = sim.grains().unbalanced_ratio();
-        std::printf("%dD, %d grains: dt %.3g s (%s); unbalanced ratio after settling %.4f\n",
-                    dim, count, sim.grains().dt(), sim.grains().automatic_dt().limiter.c_str(),
-                    ratio);
+        std::printf("%dD, %d %s: dt %.3g s (%s); unbalanced ratio after settling %.4f\n", dim,
+                    count, dimers ? "two-disc clumps" : "grains", sim.grains().dt(),
+                    sim.grains().automatic_dt().limiter.c_str(), ratio);
         EXPECT_LT(ratio, 0.01) << dim << "D";
         EXPECT_NE(sim.grains().automatic_dt().limiter.find("tangential-rotational"),
                   std::string::npos);

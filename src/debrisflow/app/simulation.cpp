@@ -252,11 +252,14 @@ io::RunReport Simulation::run(const RunOptions& opt) {
             log_.line(std::string("ERROR: settling stopped: ") + e.what());
             throw;
         }
-        if (files) {
+        if (files && grains_.clumps.empty()) {
             scenario::write_grain_state(opt.out_dir + "/grains_settled.csv", grains_,
                                         spec_.dem.materials);
             log_.line("settled state: " + opt.out_dir +
                       "/grains_settled.csv (reuse with packing = \"file\")");
+        } else if (files) {
+            log_.line("settled state not written: a saved grain state holds spheres only, and "
+                      "this case has clumps");
         }
     }
 
@@ -445,7 +448,7 @@ io::RunReport Simulation::run(const RunOptions& opt) {
         if (!d.note.empty()) log_.line("design '" + d.probe + "': " + d.note);
     }
     if (files) {
-        if (dem_)
+        if (dem_ && grains_.clumps.empty())
             scenario::write_grain_state(opt.out_dir + "/grains_final.csv", grains_,
                                         spec_.dem.materials);
         io::write_summary(opt.out_dir + "/summary.json", spec_, report, probes_, design);

@@ -15,16 +15,39 @@ time::DtLimit critical_dt(const GrainSet& grains, const std::vector<int>& wall_m
     if (n == 0) return {std::numeric_limits<Real>::max(), "no grains"};
     std::vector<Real> mmin(std::size_t(nm), std::numeric_limits<Real>::max()), rmin = mmin;
     // Per material, the largest tangential compliance of a contact point, 1/m + r^2/I (3.5/m
-    // for a sphere, 3/m for a disc), and the largest rotational one, 1/I.
+    // for a sphere, 3/m for a disc), and the largest rotational one, 1/I. A clump member's
+    // contact point sits at up to |s| + r from the clump's centre of mass (s: the member's
+    // offset), so its compliances are 1/M + |s|^2/I_min (normal; the mass it stands for is the
+    // inverse) and 1/M + (|s| + r)^2/I_min (tangential), with the clump's mass M and smallest
+    // principal moment I_min.
     std::vector<Real> ct(std::size_t(nm), 0), cr = ct;
+    const ClumpSet& clumps = grains.clumps;
+    std::vector<std::pair<std::int32_t, std::uint32_t>> member_of; // id -> (clump, member)
+    if (!clumps.empty()) {
+        member_of.assign(grains.next_id(), {-1, 0});
+        for (Index c = 0; c < clumps.size(); ++c)
+            for (std::uint32_t k = clumps.first[std::size_t(c)];
+                 k < clumps.first[std::size_t(c) + 1]; ++k)
+                member_of[clumps.member_id[k]] = {std::int32_t(c), k};
+    }
     Real vmax = 0;
     for (Index i = 0; i < n; ++i) {
         const std::size_t k = std::size_t(i), m = grains.material[k];
-        mmin[m] = std::min(mmin[m], grains.mass[k]);
-        rmin[m] = std::min(rmin[m], grains.radius[k]);
-        ct[m] = std::max(ct[m], grains.inv_mass[k] +
-                                    grains.radius[k] * grains.radius[k] * grains.inv_inertia[k]);
-        cr[m] = std::max(cr[m], grains.inv_inertia[k]);
+        const Real r = grains.radius[k];
+        Real normal = grains.inv_mass[k], tangential = normal + r * r * grains.inv_inertia[k],
+             rotational = grains.inv_inertia[k];
+        if (!member_of.empty() && member_of[grains.id[k]].first >= 0) {
+            const auto [c, slot] = member_of[grains.id[k]];
+            const Real inv_m = 1 / clumps.mass[std::size_t(c)];
+            const Real inv_i = clumps.max_inv_inertia(c), lever = norm(clumps.offset[slot]);
+            normal = inv_m + lever * lever * inv_i;
+            tangential = inv_m + (lever + r) * (lever + r) * inv_i;
+            rotational = inv_i;
+        }
+        mmin[m] = std::min(mmin[m], 1 / normal);
+        rmin[m] = std::min(rmin[m], r);
+        ct[m] = std::max(ct[m], tangential);
+        cr[m] = std::max(cr[m], rotational);
         vmax = std::max(vmax, norm(grains.vel[k]));
     }
     Real vref = params.reference_velocity;

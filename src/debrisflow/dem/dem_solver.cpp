@@ -4,6 +4,7 @@
 #include "debrisflow/dem/critical_dt.hpp"
 #include "debrisflow/dem/grain_contact_k.hpp"
 #include "debrisflow/exec/parallel.hpp"
+#include "debrisflow/rigid/free_rotation_k.hpp"
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -26,6 +27,7 @@ DemSolver::DemSolver(const DemParams& params, GrainSet& grains, WallSet& walls,
                      const sph::Domain& domain)
     : params_(params), grains_(grains), walls_(walls), materials_(std::move(materials)),
       table_(build_pair_table(materials_, overrides, params.rolling)), domain_(domain) {
+    map_clumps();
     for (Real r : grains_.radius) max_radius_ = std::max(max_radius_, r);
     skin_ = params_.skin * 2 * max_radius_;
     const std::vector<int> wall_materials = [&] {
@@ -108,20 +110,24 @@ void DemSolver::rebuild() {
         wall_slots_.permute(perm);
         obstacle_slots_.permute(perm);
         if (fluid_) fluid_->permute(perm);
+        map_clumps();
         build_grid();
     }
     const GrainView g = grains_.view();
     refresh_hot();
     const neighbors::GridView grid = grid_.view();
     const Real skin = skin_;
+    const std::int32_t* clump_of = clump_of_id_.empty() ? nullptr : clump_of_id_.data();
     grain_slots_.build(n, [&](Index i, auto&& emit) {
         const Real ri = g.radius[i];
         const std::uint32_t idi = g.id[i];
+        const std::int32_t ci = clump_of ? clump_of[idi] : -1;
         const Real* p = &g.pos[0].x;
         grid.for_each_neighbor(
             i, g.pos[i], p, p + 1, p + 2,
             [&](Index j, Vec3, Real r2) {
                 if (g.id[j] < idi) return;
+                if (ci >= 0 && clump_of[g.id[j]] == ci) return; // members of one clump
                 const Real reach = ri + g.radius[j] + skin;
                 if (r2 < reach * reach) emit(j, g.id[j]);
             },
@@ -182,8 +188,10 @@ void DemSolver::kick_drift(Real h) {
     GrainState* hot = hot_.data();
     Real vmax2 = 0;
     int bad = 0;
+    const std::int32_t* clump_of = clump_of_id_.empty() ? nullptr : clump_of_id_.data();
 #pragma omp parallel for schedule(static) reduction(max : vmax2) reduction(+ : bad) if (g.n > parallel_min)
     for (Index i = 0; i < g.n; ++i) {
+        if (clump_of && clump_of[g.id[i]] >= 0) continue; // moved with its clump below
         // v_n+1/2 = v_n + (h/2) a_n drives the drift; the stored velocity is then the
         // prediction v* = v_n+1/2 + (h/2) a_n, so that the dashpots see the velocity at the time
         // of the positions (second-order damping); the final kick adds (h/2)(a_n+1 - a_n).
@@ -214,6 +222,7 @@ void DemSolver::kick_drift(Real h) {
         const Real v2 = vel[0] * vel[0] + vel[1] * vel[1] + vel[2] * vel[2];
         vmax2 = std::max(vmax2, v2);
     }
+    if (clump_of) vmax2 = std::max(vmax2, clump_kick_drift(h));
     if (bad > 0 || !std::isfinite(vmax2)) bad_ = true;
     drift_ += h * (std::sqrt(vmax2) + walls_.max_speed());
 }
@@ -305,12 +314,15 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
     const Real* fbeta = fluid_ ? fluid_->beta.data() : nullptr;
     Vec3* fimp = fluid_ && ends_step ? fluid_->impulse.data() : nullptr;
     Vec3* ffelt = fluid_ ? fluid_->felt.data() : nullptr;
+    const std::int32_t* clump_of = clump_of_id_.empty() ? nullptr : clump_of_id_.data();
 #pragma omp parallel reduction(+ : touching, fsum) if (n > parallel_min)
     {
         std::vector<Real> local(6 * nw, 0), obody(6 * nb, 0);
 #pragma omp for schedule(static)
         for (Index i = 0; i < n; ++i) {
-            Vec3 f = g.mass[i] * grav, t{};
+            // a clump member's force is its contacts'; gravity acts on the clump
+            const bool member = clump_of && clump_of[g.id[i]] >= 0;
+            Vec3 f = (member ? Real(0) : g.mass[i]) * grav, t{};
             for (int b = 0; b < nbuf; ++b) {
                 const Real* bi = bufs[b] + 6 * std::size_t(i);
                 f += Vec3{bi[0], bi[1], bi[2]};
@@ -414,7 +426,7 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
                 ffelt[i] = ff;
             }
             if (plane) f.y = 0, t.x = 0, t.z = 0;
-            if (half > 0) {
+            if (half > 0 && !member) {
                 const Real im = g.inv_mass[i], ii = g.inv_inertia[i];
                 g.vel[i] += (half * im) * (f - g.force[i]);
                 g.spin[i] += (half * ii) * (t - g.torque[i]);
@@ -428,6 +440,7 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
             for (std::size_t k = 0; k < obody.size(); ++k) body_sum[k] += obody[k];
         }
     }
+    if (clump_of) clump_forces(half_kick);
     if (obstacles_ && (ends_step || collect_obstacles) && current_h_ > 0) {
         auto& o = *obstacles_;
         o.impulse.resize(nb);
@@ -522,13 +535,35 @@ void DemSolver::remove_wall(int wall) {
     walls_.walls()[std::size_t(wall)].force = {};
 }
 
-void DemSolver::remove_grains(const std::vector<std::uint8_t>& keep) {
+void DemSolver::expand_to_clumps(std::vector<std::uint8_t>& keep) const {
+    const ClumpSet& cl = grains_.clumps;
+    for (Index c = 0; c < cl.size(); ++c) {
+        const std::size_t b = cl.first[std::size_t(c)], e = cl.first[std::size_t(c) + 1];
+        bool whole = true;
+        for (std::size_t k = b; k < e; ++k)
+            whole = whole && keep[std::size_t(index_of_id_[cl.member_id[k]])];
+        if (whole) continue;
+        for (std::size_t k = b; k < e; ++k) keep[std::size_t(index_of_id_[cl.member_id[k]])] = 0;
+    }
+}
+
+void DemSolver::remove_grains(std::vector<std::uint8_t> keep) {
     evaluated_ = false;
+    expand_to_clumps(keep);
     std::vector<Index> kept;
     for (Index i = 0; i < grains_.size(); ++i)
         if (keep[std::size_t(i)]) kept.push_back(i);
     if (kept.size() == std::size_t(grains_.size())) return;
+    if (!grains_.clumps.empty()) {
+        ClumpSet& cl = grains_.clumps;
+        std::vector<std::uint8_t> keep_clump(std::size_t(cl.size()));
+        for (Index c = 0; c < cl.size(); ++c)
+            keep_clump[std::size_t(c)] =
+                keep[std::size_t(index_of_id_[cl.member_id[cl.first[std::size_t(c)]]])];
+        cl.select(keep_clump);
+    }
     grains_.select(kept);
+    map_clumps();
     if (fluid_) fluid_->select(kept);
     for (auto* slots : {&grain_slots_, &wall_slots_, &obstacle_slots_}) slots->remap(kept);
     obstacle_builds_seen_ = -1;
@@ -539,6 +574,7 @@ void DemSolver::remove_grains(const std::vector<std::uint8_t>& keep) {
 
 void DemSolver::grains_added(Index old_count) {
     evaluated_ = false;
+    map_clumps();
     std::vector<Index> from(std::size_t(grains_.size()), -1);
     for (Index i = 0; i < old_count; ++i) from[std::size_t(i)] = i;
     if (fluid_) fluid_->permute(from);
@@ -575,7 +611,110 @@ void DemSolver::include_sizes(const GrainSet& prototypes) {
 void DemSolver::stop_grains() {
     evaluated_ = false;
     for (auto* v : {&grains_.vel, &grains_.spin}) std::fill(v->begin(), v->end(), Vec3{});
+    for (auto* v : {&grains_.clumps.vel, &grains_.clumps.ang_mom})
+        std::fill(v->begin(), v->end(), Vec3{});
     refresh_hot();
+}
+
+void DemSolver::map_clumps() {
+    const ClumpSet& cl = grains_.clumps;
+    if (cl.empty()) {
+        clump_of_id_.clear();
+        index_of_id_.clear();
+        return;
+    }
+    clump_of_id_.assign(grains_.next_id(), -1);
+    for (Index c = 0; c < cl.size(); ++c)
+        for (std::size_t k = cl.first[std::size_t(c)]; k < cl.first[std::size_t(c) + 1]; ++k)
+            clump_of_id_[cl.member_id[k]] = std::int32_t(c);
+    index_of_id_.assign(grains_.next_id(), -1);
+    for (Index i = 0; i < grains_.size(); ++i) index_of_id_[grains_.id[std::size_t(i)]] = i;
+}
+
+Real DemSolver::clump_kick_drift(Real h) {
+    ClumpSet& cl = grains_.clumps;
+    GrainView g = grains_.view();
+    GrainState* hot = hot_.data();
+    const Real half = Real(0.5) * h;
+    const bool plane = params_.dim == 2;
+    const sph::Domain dom = domain_;
+    const Index* where = index_of_id_.data();
+    Real vmax2 = 0;
+    int bad = 0;
+#pragma omp parallel for schedule(static) reduction(max : vmax2) reduction(+ : bad) if (cl.size() > parallel_min / 4)
+    for (Index c = 0; c < cl.size(); ++c) {
+        const std::size_t k = std::size_t(c);
+        // as the grains: v_n+1/2 = v_n + (h/2) F/M drives the drift, the stored velocity is the
+        // prediction v_n+1/2 + (h/2) F/M; likewise the angular momentum, whose half-step value
+        // turns the clump (rigid::free_rotation)
+        const Vec3 dv = (half / cl.mass[k]) * cl.force[k], dl = half * cl.torque[k];
+        Vec3 v = cl.vel[k] + dv, l = cl.ang_mom[k] + dl;
+        if (plane) v.y = 0, l.x = 0, l.z = 0;
+        Vec3 x = cl.pos[k] + h * v;
+        rigid::free_rotation(cl.orient[k], l, cl.inv_inertia[k], h);
+        v += dv, l += dl;
+        if (plane) v.y = 0, l.x = 0, l.z = 0;
+        for (int d = 0; d < 3; ++d)
+            if (dom.periodic[d]) {
+                const Real len = dom.hi[d] - dom.lo[d];
+                if (x[d] >= dom.hi[d]) x[d] -= len;
+                if (x[d] < dom.lo[d]) x[d] += len;
+            }
+        cl.pos[k] = x, cl.vel[k] = v, cl.ang_mom[k] = l;
+        const Vec3 w = rigid::angular_velocity(cl.orient[k], l, cl.inv_inertia[k]);
+        for (std::size_t m = cl.first[k]; m < cl.first[k + 1]; ++m) {
+            const Index i = where[cl.member_id[m]];
+            const Vec3 lever = rigid::rotate(cl.orient[k], cl.offset[m]);
+            Vec3 p = x + lever;
+            const Vec3 vi = v + cross(w, lever);
+            for (int d = 0; d < 3; ++d) {
+                if (dom.periodic[d]) {
+                    const Real len = dom.hi[d] - dom.lo[d];
+                    if (p[d] >= dom.hi[d]) p[d] -= len;
+                    if (p[d] < dom.lo[d]) p[d] += len;
+                } else if (!(plane && d == 1) && !(p[d] >= dom.lo[d] && p[d] <= dom.hi[d])) {
+                    ++bad;
+                }
+            }
+            g.pos[i] = p, g.vel[i] = vi, g.spin[i] = w;
+            hot[i].x = p, hot[i].v = vi, hot[i].w = w;
+            vmax2 = std::max(vmax2, dot(vi, vi));
+        }
+    }
+    if (bad > 0) bad_ = true;
+    return vmax2;
+}
+
+void DemSolver::clump_forces(Real half) {
+    ClumpSet& cl = grains_.clumps;
+    GrainView g = grains_.view();
+    const Vec3 grav = params_.gravity;
+    const bool plane = params_.dim == 2;
+    const Index* where = index_of_id_.data();
+#pragma omp parallel for schedule(static) if (cl.size() > parallel_min / 4)
+    for (Index c = 0; c < cl.size(); ++c) {
+        const std::size_t k = std::size_t(c);
+        Vec3 f = cl.mass[k] * grav, t{};
+        for (std::size_t m = cl.first[k]; m < cl.first[k + 1]; ++m) {
+            const Index i = where[cl.member_id[m]];
+            const Vec3 lever = rigid::rotate(cl.orient[k], cl.offset[m]);
+            f += g.force[i];
+            t += cross(lever, g.force[i]) + g.torque[i];
+        }
+        if (plane) f.y = 0, t.x = 0, t.z = 0;
+        if (half > 0) {
+            cl.vel[k] += (half / cl.mass[k]) * (f - cl.force[k]);
+            cl.ang_mom[k] += half * (t - cl.torque[k]);
+        }
+        cl.force[k] = f, cl.torque[k] = t;
+        const Vec3 w = rigid::angular_velocity(cl.orient[k], cl.ang_mom[k], cl.inv_inertia[k]);
+        for (std::size_t m = cl.first[k]; m < cl.first[k + 1]; ++m) {
+            const Index i = where[cl.member_id[m]];
+            const Vec3 lever = rigid::rotate(cl.orient[k], cl.offset[m]);
+            g.vel[i] = cl.vel[k] + cross(w, lever);
+            g.spin[i] = w;
+        }
+    }
 }
 
 void DemSolver::refresh_hot() {
@@ -590,9 +729,17 @@ Real DemSolver::unbalanced_ratio() const {
     // A packing is only judged once it is one (on average a contact per grain): early on a
     // few hard collisions among falling grains would make the ratio small.
     if (n == 0 || 2 * contacts_ < long(n)) return std::numeric_limits<Real>::max();
+    // a clump counts once, with its net force
     Real sum = 0;
-    for (Index i = 0; i < n; ++i) sum += norm(grains_.force[std::size_t(i)]);
-    return (sum / Real(n)) / mean_contact_force();
+    long bodies = 0;
+    for (Index i = 0; i < n; ++i) {
+        if (!clump_of_id_.empty() && clump_of_id_[grains_.id[std::size_t(i)]] >= 0) continue;
+        sum += norm(grains_.force[std::size_t(i)]);
+        ++bodies;
+    }
+    for (const Vec3& f : grains_.clumps.force) sum += norm(f);
+    bodies += long(grains_.clumps.size());
+    return (sum / Real(bodies)) / mean_contact_force();
 }
 
 bool DemSolver::escaped(Index i) const {

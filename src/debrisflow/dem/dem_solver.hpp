@@ -49,8 +49,12 @@ public:
     void rebuild_now() { rebuild(); }
     // Removes a wall (a gate opening): its contacts end at the next step.
     void remove_wall(int wall);
-    // Removes the grains with keep[i] == 0 (an outlet); contact history of the rest is kept.
-    void remove_grains(const std::vector<std::uint8_t>& keep);
+    // Clears keep[i] for every member of a clump that has a member with keep[i] == 0: a clump
+    // leaves whole. Call before counting what remove_grains will take.
+    void expand_to_clumps(std::vector<std::uint8_t>& keep) const;
+    // Removes the grains with keep[i] == 0 (an outlet), with their whole clumps; contact
+    // history of the rest is kept.
+    void remove_grains(std::vector<std::uint8_t> keep);
     // True when a step left a grain outside the domain or with a non-finite state (then
     // check_health stops the run unless such grains are removed first).
     bool may_have_left() const { return bad_; }
@@ -103,6 +107,18 @@ private:
     void build_obstacle_slots();
     // Whether grain i is outside the (non-periodic) domain or not finite.
     bool escaped(Index i) const;
+    // Clumps (grains_.clumps): which clump each grain id belongs to (-1: a free grain) and
+    // where each id is now; rebuilt whenever grains are reordered, removed or added.
+    void map_clumps();
+    // The first half kick and the drift of every clump, and its members placed and moved
+    // with it (velocity and spin predicted to the end of the step, as the grains'). Returns
+    // the largest member speed squared; flags a member outside the domain in bad_.
+    Real clump_kick_drift(Real h);
+    // Sums the members' forces and torques (and gravity) on each clump, gives the clump its
+    // closing half kick (half > 0) and moves the members' velocities and spins with it.
+    void clump_forces(Real half);
+    std::vector<std::int32_t> clump_of_id_;
+    std::vector<Index> index_of_id_;
 
     DemParams params_;
     GrainSet& grains_;

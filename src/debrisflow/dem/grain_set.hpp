@@ -1,6 +1,7 @@
 #pragma once
 #include "debrisflow/core/real.hpp"
 #include "debrisflow/core/vec3_k.hpp"
+#include "debrisflow/dem/clump_set.hpp"
 #include <cstdint>
 #include <type_traits>
 #include <vector>
@@ -28,6 +29,8 @@ public:
     std::vector<Real> radius, mass, inv_mass, inv_inertia;
     std::vector<std::uint8_t> material;
     std::vector<std::uint32_t> id;
+    // Rigid clumps whose members are grains of this set (empty: every grain is free).
+    ClumpSet clumps;
 
     Index size() const { return Index(pos.size()); }
     // Adds a grain of the given mass and moment of inertia (solid sphere 2/5 m r^2, disc
@@ -40,6 +43,8 @@ public:
     void select(const std::vector<Index>& kept);
     GrainView view();
     Real total_mass() const;
+    // The id the next grain added will get (ids are 0, 1, 2 ... in order of addition).
+    std::uint32_t next_id() const { return next_id_; }
 
 private:
     std::uint32_t next_id_ = 0;

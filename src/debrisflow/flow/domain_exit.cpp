@@ -1,6 +1,7 @@
 #include "debrisflow/flow/domain_exit.hpp"
 #include "debrisflow/dem/dem_solver.hpp"
 #include "debrisflow/exec/parallel.hpp"
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -47,11 +48,12 @@ std::string DomainExit::note(const char* phase, const char* unit, ExitTally& tal
     const Real lost = tally.total_mass();
     if (!warned && held > 0 && lost > spec_.warn_fraction * held) {
         warned = true;
-        out += fmt::format("{}WARNING: t = {:.6g} s: the {} that left the domain ({} of them, "
-                           "{:.4g} {}) exceed {:.3g} % of the mass of the {} ({:.4g} {}); check the "
-                           "domain, the walls and the time step",
-                           out.empty() ? "" : "\n", t, phase, tally.total_count(), lost, unit,
-                           100 * spec_.warn_fraction, phase, held, unit);
+        out +=
+            fmt::format("{}WARNING: t = {:.6g} s: the {} that left the domain ({} of them, "
+                        "{:.4g} {}) exceed {:.3g} % of the mass of the {} ({:.4g} {}); check the "
+                        "domain, the walls and the time step",
+                        out.empty() ? "" : "\n", t, phase, tally.total_count(), lost, unit,
+                        100 * spec_.warn_fraction, phase, held, unit);
     }
     return out;
 }
@@ -88,7 +90,8 @@ std::string DomainExit::apply(sph::SphSolver* fluid, dem::DemSolver* grains, Rea
                 fluid_.mass[std::size_t(f)] += s.mass[i];
             }
             fluid->remove_particles(keep);
-            join(note("fluid particles", dim_ == 2 ? "kg/m" : "kg", fluid_, before, held, fluid_warned_, t));
+            join(note("fluid particles", dim_ == 2 ? "kg/m" : "kg", fluid_, before, held,
+                      fluid_warned_, t));
         }
     }
     if (grains && grains->may_have_left()) {
@@ -98,17 +101,43 @@ std::string DomainExit::apply(sph::SphSolver* fluid, dem::DemSolver* grains, Rea
         std::vector<std::uint8_t> keep(std::size_t(n), 1);
         Real held = grains_.total_mass(); // all the grains ever held: lost before + in the set
         bool any = false;
+        std::vector<int> face(std::size_t(n), -1);
         for (Index i = 0; i < n; ++i) {
             const std::size_t k = std::size_t(i);
             held += g.mass[k];
-            const int f = finite(g.pos[k]) ? face_of(g.pos[k]) : -1;
-            if (f < 0) continue;
+            face[k] = finite(g.pos[k]) ? face_of(g.pos[k]) : -1;
+            if (face[k] < 0) continue;
             keep[k] = 0;
             any = true;
-            ++grains_.count[std::size_t(f)];
-            grains_.mass[std::size_t(f)] += g.mass[k];
         }
         if (any) {
+            // a clump leaves whole: its members still inside count at a face one of them crossed
+            grains->expand_to_clumps(keep);
+            const auto& cl = g.clumps;
+            if (!cl.empty()) {
+                std::vector<Index> where(g.next_id(), -1);
+                for (Index i = 0; i < n; ++i) where[g.id[std::size_t(i)]] = i;
+                for (Index c = 0; c < cl.size(); ++c) {
+                    const std::size_t b = cl.first[std::size_t(c)],
+                                      e = cl.first[std::size_t(c) + 1];
+                    int crossed = -1;
+                    for (std::size_t m = b; m < e; ++m)
+                        crossed = std::max(crossed, face[std::size_t(where[cl.member_id[m]])]);
+                    if (crossed < 0) continue;
+                    for (std::size_t m = b; m < e; ++m) {
+                        int& f = face[std::size_t(where[cl.member_id[m]])];
+                        if (f < 0) f = crossed;
+                    }
+                }
+            }
+            for (Index i = 0; i < n; ++i) {
+                const std::size_t k = std::size_t(i);
+                if (keep[k]) continue;
+                const int f = face[k];
+                if (f < 0) continue; // not finite: its clump goes, the health check speaks
+                ++grains_.count[std::size_t(f)];
+                grains_.mass[std::size_t(f)] += g.mass[k];
+            }
             grains->remove_grains(keep);
             join(note("grains", "kg", grains_, before, held, grains_warned_, t));
         }

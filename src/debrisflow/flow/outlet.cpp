@@ -33,11 +33,17 @@ void Outlet::apply(sph::SphSolver* fluid, dem::DemSolver* grains, rigid::BodySol
             if (!inside(p.x, p.y, p.z)) continue;
             keep[std::size_t(i)] = 0;
             any = true;
-            grain_mass_ += g.mass[std::size_t(i)];
-            grain_volume_ += g.mass[std::size_t(i)] / mats[g.material[std::size_t(i)]].density;
-            ++grains_removed_;
         }
-        if (any) grains->remove_grains(keep);
+        if (any) {
+            grains->expand_to_clumps(keep); // a clump with a member inside leaves whole
+            for (Index i = 0; i < n; ++i) {
+                if (keep[std::size_t(i)]) continue;
+                grain_mass_ += g.mass[std::size_t(i)];
+                grain_volume_ += g.mass[std::size_t(i)] / mats[g.material[std::size_t(i)]].density;
+                ++grains_removed_;
+            }
+            grains->remove_grains(keep);
+        }
     }
     if (bodies) {
         std::vector<std::uint8_t> keep; // the removed bodies' SPH boundary particles

@@ -180,10 +180,12 @@ ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
     ProbeSpec p;
     p.origin = t.origin();
     p.name = t.name("name");
-    p.type = t.choice("type", {"pressure", "gauge", "velocity", "front", "wall_force", "section",
-                               "kinetic_energy", "runup", "mass_flux", "body", "discharge",
-                               "trapping", "deposit", "flow_section", "fluid_runup", "pressure_map",
-                               "fem_displacement", "fem_force", "fem_face_load", "domain_exit"});
+    p.type =
+        t.choice("type", {"pressure",         "gauge",        "velocity",       "front",
+                          "wall_force",       "section",      "kinetic_energy", "runup",
+                          "mass_flux",        "body",         "discharge",      "trapping",
+                          "deposit",          "flow_section", "fluid_runup",    "pressure_map",
+                          "fem_displacement", "fem_force",    "fem_face_load",  "domain_exit"});
     p.every = t.positive("every", 0.001);
     if (c.t_end / p.every > 1e8)
         t.fail("every", fmt::format("would write {:.3g} rows over time.end = {} s (at most 1e8)",

@@ -74,6 +74,12 @@ struct GrainsSpec {
     Vec3 position, velocity, angular_velocity;
     unsigned seed = 1;
     std::string file;
+    // Non-spherical grains: a rigid clump of spheres (discs in 2D), given as (x, y, z, r) in
+    // any unit and scaled so that its volume-equivalent diameter (2D: area-equivalent) is the
+    // grain's size; empty: spheres. Random orientation unless `aligned`.
+    std::vector<Vec3> clump_centers;
+    std::vector<Real> clump_radii;
+    bool clump_aligned = false;
     // packing = "file": which of material, velocity, angular_velocity and region the block
     // gives to override the saved state (region: keep the grains whose centre is inside).
     struct FileOverrides {

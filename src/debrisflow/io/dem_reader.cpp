@@ -150,6 +150,21 @@ GrainsSpec read_grains(const ConfigTable& t, const CaseSpec& c) {
         t.fail("material", "no [[material]] named \"" + g.material + "\"");
     g.velocity = t.vec3("velocity", c.dim, {});
     g.angular_velocity = t.vec3("angular_velocity", 3, {});
+    if (t.has("clump")) {
+        if (file)
+            t.fail("clump", "a saved grain state holds spheres only; clumps are built from "
+                            "packing = \"random\", \"lattice\" or \"single\"");
+        // rows (x, y, z, r), as a [[body]] clump's spheres; y is ignored in 2D
+        for (const auto& r : t.rows("clump", 4)) {
+            if (!(r[3] > 0)) t.fail("clump", "radii (4th number of each row) must be > 0");
+            g.clump_centers.push_back({r[0], c.dim == 2 ? 0 : r[1], r[2]});
+            g.clump_radii.push_back(r[3]);
+        }
+        if (g.clump_centers.size() < 2)
+            t.fail("clump", "a clump needs at least two spheres (one is a plain grain)");
+        if (g.clump_centers.size() > 64) t.fail("clump", "at most 64 spheres per clump");
+        g.clump_aligned = t.choice("orientation", {"random", "aligned"}, "random") == "aligned";
+    }
     if (file) {
         g.file = t.string("file");
         if (auto region = t.table("region")) {

@@ -37,13 +37,13 @@ void write_summary(const std::string& path, const CaseSpec& spec, const RunRepor
         for (std::size_t f = 0; f < 6; ++f)
             faces += fmt::format("{}{}: {{\"count\": {}, \"mass\": {}}}", f ? ", " : "",
                                  quoted(flow::face_names[f]), e.count[f], num(e.mass[f]));
-        return fmt::format("{{\"count\": {}, \"mass\": {}, \"mass_unit\": \"{}\", \"faces\": {{{}}}}}",
-                           e.total_count(), num(e.total_mass()), unit, faces);
+        return fmt::format(
+            "{{\"count\": {}, \"mass\": {}, \"mass_unit\": \"{}\", \"faces\": {{{}}}}}",
+            e.total_count(), num(e.total_mass()), unit, faces);
     };
     o << "  \"left_domain\": {\"policy\": " << quoted(spec.domain_exit.policy)
       << ", \"fluid\": " << exit_block(r.fluid_exit, spec.dim == 2 ? "kg/m" : "kg")
-      << ", \"grains\": " << exit_block(r.grain_exit, "kg")
-      << "},\n";
+      << ", \"grains\": " << exit_block(r.grain_exit, "kg") << "},\n";
     o << "  \"steps\": " << res.steps << ",\n";
     o << "  \"simulated_time\": " << num(res.t) << ",\n";
     o << "  \"end_time\": " << num(spec.t_end) << ",\n";

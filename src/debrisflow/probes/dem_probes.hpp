@@ -26,7 +26,7 @@ private:
 };
 
 // Kinetic energy of the grains whose centres lie in a box: translational sum 1/2 m v^2 and
-// rotational sum 1/2 I w^2.
+// rotational sum 1/2 I w^2; a clump counts once, by its centre of mass (1/2 M V^2, 1/2 w . L).
 class KineticEnergyProbe : public Probe {
 public:
     explicit KineticEnergyProbe(const io::ProbeSpec& s)

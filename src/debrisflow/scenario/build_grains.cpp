@@ -1,6 +1,7 @@
 #include "debrisflow/scenario/build_grains.hpp"
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/dem/box_faces.hpp"
+#include "debrisflow/scenario/clump_template.hpp"
 #include "debrisflow/scenario/resource_estimate.hpp"
 #include "debrisflow/scenario/size_sampler.hpp"
 #include "debrisflow/scenario/stl_mesh.hpp"
@@ -85,14 +86,43 @@ struct Region {
     }
 };
 
+// Makes the grains of a block: spheres (discs), or clumps of its template in a random (seeded)
+// or the template's own orientation; `reach` is what a grain of size d needs around its
+// centre (its radius, or its clump's bounding radius).
+struct GrainMaker {
+    const io::CaseSpec& c;
+    const io::GrainsSpec& b;
+    int mat;
+    std::optional<ClumpTemplate> shape;
+    std::mt19937_64 turn;
+    GrainMaker(const io::CaseSpec& cs, const io::GrainsSpec& bs, int m)
+        : c(cs), b(bs), mat(m), turn(0x9E3779B97F4A7C15ULL ^ bs.seed) {
+        if (!b.clump_radii.empty()) shape = ClumpTemplate::from(b, c);
+    }
+    Real reach(Real d) const { return shape ? shape->bounding_radius(d) : d / 2; }
+    // Adds one grain (or clump) of size d at p; returns the mass added.
+    Real add(dem::GrainSet& g, Vec3 p, Real d) {
+        const Index before = g.size();
+        if (shape)
+            add_clump(c, g, *shape, p, b.velocity, b.angular_velocity, d, mat,
+                      b.clump_aligned ? rigid::Quat{} : random_orientation(turn, c.dim));
+        else
+            add_grain(c, g, p, b.velocity, b.angular_velocity, d, mat);
+        Real m = 0;
+        for (Index i = before; i < g.size(); ++i) m += g.mass[std::size_t(i)];
+        return m;
+    }
+};
+
 // Random sequential insertion: uniform trial positions, rejected on overlap with any grain
-// already placed (hash grid of cell = largest diameter).
+// already placed (hash grid of cell = largest diameter; clumps by their bounding spheres).
 void insert_random(const io::CaseSpec& c, const io::GrainsSpec& b, int mat, dem::GrainSet& g) {
     SizeSampler sizes(b.size, c.dim, b.seed);
+    GrainMaker maker(c, b, mat);
     Region region(b.region, c.dim);
     Vec3 lo, hi;
     region.bounds(lo, hi);
-    const Real cell = b.size.max;
+    const Real cell = 2 * maker.reach(b.size.max);
     auto key = [&](Vec3 p) {
         const long i = long(std::floor((p.x - lo.x) / cell)),
                    j = long(std::floor((p.y - lo.y) / cell)),
@@ -107,7 +137,7 @@ void insert_random(const io::CaseSpec& c, const io::GrainsSpec& b, int mat, dem:
     const long max_failures = 20000;
     Real d = sizes();
     while ((b.count > 0 && count < b.count) || (b.mass > 0 && mass < b.mass)) {
-        const Real r = d / 2;
+        const Real r = maker.reach(d);
         Vec3 p{lo.x + u(rng) * (hi.x - lo.x), c.dim == 2 ? 0 : lo.y + u(rng) * (hi.y - lo.y),
                lo.z + u(rng) * (hi.z - lo.z)};
         bool ok = region.holds(p, r);
@@ -133,8 +163,7 @@ void insert_random(const io::CaseSpec& c, const io::GrainsSpec& b, int mat, dem:
         }
         failures = 0;
         placed.emplace(key(p), std::make_pair(p, r));
-        add_grain(c, g, p, b.velocity, b.angular_velocity, d, mat);
-        mass += g.mass.back();
+        mass += maker.add(g, p, d);
         ++count;
         d = sizes();
     }
@@ -142,18 +171,20 @@ void insert_random(const io::CaseSpec& c, const io::GrainsSpec& b, int mat, dem:
 
 void fill_lattice(const io::CaseSpec& c, const io::GrainsSpec& b, int mat, dem::GrainSet& g) {
     Region region(b.region, c.dim);
+    GrainMaker maker(c, b, mat);
     Vec3 lo, hi;
     region.bounds(lo, hi);
-    const Real d = b.size.diameter > 0 ? b.size.diameter : b.size.min, s = d * (1 + b.gap);
+    const Real d = b.size.diameter > 0 ? b.size.diameter : b.size.min;
+    const Real r = maker.reach(d), s = 2 * r * (1 + b.gap);
     require_lattice_within_budget(lo, hi, s, c.dim, b.origin.block() + ": grains '" + b.name + "'");
     long placed = 0;
-    for (Real z = lo.z + d / 2; z <= hi.z - d / 2 + 1e-12; z += s)
-        for (Real y = c.dim == 2 ? 0 : lo.y + d / 2; y <= (c.dim == 2 ? 0 : hi.y - d / 2 + 1e-12);
+    for (Real z = lo.z + r; z <= hi.z - r + 1e-12; z += s)
+        for (Real y = c.dim == 2 ? 0 : lo.y + r; y <= (c.dim == 2 ? 0 : hi.y - r + 1e-12);
              y += (c.dim == 2 ? 1 : s))
-            for (Real x = lo.x + d / 2; x <= hi.x - d / 2 + 1e-12; x += s) {
+            for (Real x = lo.x + r; x <= hi.x - r + 1e-12; x += s) {
                 const Vec3 p{x, y, z};
-                if (!region.holds(p, d / 2 * (1 - 1e-9))) continue;
-                add_grain(c, g, p, b.velocity, b.angular_velocity, d, mat);
+                if (!region.holds(p, r * (1 - 1e-9))) continue;
+                maker.add(g, p, d);
                 ++placed;
             }
     if (placed == 0)
@@ -217,7 +248,7 @@ void build_grains(const io::CaseSpec& c, dem::GrainSet& g) {
         } else {
             const int mat = material_index(c, b.material);
             if (b.packing == "single")
-                add_grain(c, g, b.position, b.velocity, b.angular_velocity, b.size.diameter, mat);
+                GrainMaker(c, b, mat).add(g, b.position, b.size.diameter);
             else if (b.packing == "lattice")
                 fill_lattice(c, b, mat, g);
             else

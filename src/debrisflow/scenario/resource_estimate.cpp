@@ -212,7 +212,10 @@ ResourceEstimate estimate_resources(const io::CaseSpec& c) {
             n = lattice_points(lo, hi, d * (1 + g.gap), c.dim);
             key = "diameter";
         }
-        add("grains '" + g.name + "'", g.origin.at(key), n, bytes_per_grain());
+        // a clump (size: its volume-equivalent diameter) is as many grains as it has spheres;
+        // on a lattice it takes at least its diameter (an upper bound on the count)
+        const double members = g.clump_radii.empty() ? 1 : double(g.clump_radii.size());
+        add("grains '" + g.name + "'", g.origin.at(key), n * members, bytes_per_grain());
     }
     for (const auto& f : c.dem.feeds) {
         const double d = median_diameter(f.size);

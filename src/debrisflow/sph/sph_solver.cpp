@@ -400,8 +400,8 @@ void SphSolver::check_health(Real t) const {
         finite ? "particle left the domain" : "non-finite state (NaN/Inf)", t, s.id[bad],
         s.kind[bad] == std::uint8_t(Kind::fluid) ? "fluid" : "boundary", s.x[bad], s.y[bad],
         s.z[bad], s.vx[bad], s.vy[bad], s.vz[bad], s.rho[bad],
-        finite ? fmt::format("; domain is ({}, {}, {}) to ({}, {}, {}) m{}", d.lo.x, d.lo.y,
-                             d.lo.z, d.hi.x, d.hi.y, d.hi.z,
+        finite ? fmt::format("; domain is ({}, {}, {}) to ({}, {}, {}) m{}", d.lo.x, d.lo.y, d.lo.z,
+                             d.hi.x, d.hi.y, d.hi.z,
                              s.kind[bad] == std::uint8_t(Kind::fluid)
                                  ? " (domain.exit = \"remove\" takes fluid that leaves out of "
                                    "the run)"
