@@ -1,6 +1,7 @@
 #pragma once
 // A DEM system assembled directly (no case file) for contact-law tests.
 #include "debrisflow/dem/dem_solver.hpp"
+#include <cmath>
 #include <memory>
 
 namespace debrisflow::test {
@@ -39,6 +40,29 @@ struct DemRig {
             ++n;
         }
         return (Real(n) * stv - st * sv) / (Real(n) * stt - st * st);
+    }
+    // The tilting table: gravity of magnitude g turns about y from beta0 [deg] at `rate` deg/s,
+    // after `hold` s at beta0; returns the tilt [deg] at which `where()` has moved `distance`
+    // from where it was at the end of the hold (90: not by 60 deg).
+    template <class Where>
+    Real tilt_until_moved(Real g, Real beta0, Real rate, Real hold, Real distance,
+                          const Where& where) {
+        auto gravity = [g](Real deg) {
+            const Real b = deg * 3.14159265358979323846 / 180;
+            return Vec3{g * std::sin(b), 0, -g * std::cos(b)};
+        };
+        solver->set_gravity(gravity(beta0));
+        const Real h = solver->dt();
+        Real t = 0;
+        for (; t < hold; t += h) solver->advance(h);
+        const Vec3 rest = where();
+        for (Real beta = beta0; beta < 60; t += h) {
+            beta = beta0 + rate * (t - hold);
+            solver->set_gravity(gravity(beta));
+            solver->advance(h);
+            if (norm(where() - rest) > distance) return beta;
+        }
+        return 90;
     }
     void start(const dem::DemParams& params, std::vector<dem::Material> mats, Vec3 lo, Vec3 hi,
                const std::vector<dem::PairOverride>& overrides = {}) {

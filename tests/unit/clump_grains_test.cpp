@@ -36,12 +36,7 @@ max = [0.1, 0.1, 0.3]
 }
 
 std::string error_of(const std::string& toml) {
-    try {
-        app::Simulation sim(test::case_from_toml("clump_errors", toml));
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+    return test::input_error_of("clump_errors", toml);
 }
 
 } // namespace

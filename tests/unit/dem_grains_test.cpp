@@ -38,12 +38,7 @@ max = [0.1, 0.1, 0.3]
 }
 
 std::string error_of(const std::string& toml) {
-    try {
-        app::Simulation sim(test::case_from_toml("dem_errors", toml));
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+    return test::input_error_of("dem_errors", toml);
 }
 
 } // namespace

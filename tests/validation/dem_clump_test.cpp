@@ -51,26 +51,14 @@ Real departure_angle(bool dimer, Real mu, Real beta0, Real rate) {
         rig.grains.add({0, 0, r * (1 - 1e-4)}, {}, r, m, 0.5 * m * r * r, 0);
     }
     rig.add_plane("floor", {0, 0, 0}, {0, 0, 1}, -1);
-    auto gravity = [&](Real deg) {
-        const Real b = deg * pi / 180;
-        return Vec3{g * std::sin(b), 0, -g * std::cos(b)};
-    };
     dem::DemParams p;
     p.dim = 2;
-    p.gravity = gravity(beta0);
     p.safety = 0.05;
     rig.start(p, {glass(mu)}, {-1, 0, -1}, {1, 0, 1});
-    const Real h = rig.solver->dt();
-    Real time = 0;
-    for (; time < 0.05; time += h) rig.solver->advance(h);
-    const Real x0 = rig.grains.pos[0].x;
-    for (Real beta = beta0; beta < 60; time += h) {
-        beta = beta0 + rate * (time - 0.05);
-        rig.solver->set_gravity(gravity(beta));
-        rig.solver->advance(h);
-        if (std::abs(rig.grains.pos[0].x - x0) > 0.5 * r) return beta;
-    }
-    return 90;
+    // the clump's centre of mass, or the disc's centre
+    return rig.tilt_until_moved(g, beta0, rate, 0.05, 0.5 * r, [&] {
+        return dimer ? rig.grains.clumps.pos[0] : rig.grains.pos[0];
+    });
 }
 
 } // namespace

@@ -41,13 +41,8 @@ Real departure_angle(Real mu_roll, const std::string& rolling, Real beta0_deg, R
     base.body_com = {{0, 0, 0}};
     base.impulse.assign(1, {});
     base.angular_impulse.assign(1, {});
-    auto gravity = [&](Real beta_deg) {
-        const Real b = beta_deg * pi / 180;
-        return Vec3{g * std::sin(b), 0, -g * std::cos(b)};
-    };
     dem::DemParams p;
     p.dim = 2;
-    p.gravity = gravity(beta0_deg);
     p.rolling = rolling;
     p.safety = 0.05;
     sph::Domain d;
@@ -59,17 +54,8 @@ Real departure_angle(Real mu_roll, const std::string& rolling, Real beta0_deg, R
     rig.solver->attach_obstacles(&base);
     rig.solver->update_neighbors(true);
     rig.solver->compute_forces();
-    const Real h = rig.solver->dt();
-    Real t = 0;
-    for (; t < 0.1; t += h) rig.solver->advance(h);
-    const Vec3 rest = rig.grains.pos[0];
-    for (Real beta = beta0_deg; beta < 60; t += h) {
-        beta = beta0_deg + rate_deg * (t - 0.1);
-        rig.solver->set_gravity(gravity(beta));
-        rig.solver->advance(h);
-        if (norm(rig.grains.pos[0] - rest) > 0.5 * r) return beta;
-    }
-    return 90;
+    return rig.tilt_until_moved(g, beta0_deg, rate_deg, 0.1, 0.5 * r,
+                                [&] { return rig.grains.pos[0]; });
 }
 
 } // namespace

@@ -46,9 +46,14 @@ int check(const std::string& file, const std::vector<std::string>& sets) {
     }
     if (sim.has_grains()) {
         const auto& d = sim.grains();
-        std::cout << fmt::format("dem: {} grains, {:.4g} kg, {} materials, {} walls; dt {:.4g} s "
+        const auto clumps = d.grains().clumps.size();
+        std::cout << fmt::format("dem: {} grains{}, {:.4g} kg, {} materials, {} walls; dt {:.4g} s "
                                  "({}), automatic {:.4g} s ({}), largest accepted {:.4g} s{}\n",
-                                 grains, d.grains().total_mass(), spec.dem.materials.size(),
+                                 grains,
+                                 clumps ? fmt::format(" ({} of them in {} clumps)",
+                                                      d.grains().clumps.member_id.size(), clumps)
+                                        : "",
+                                 d.grains().total_mass(), spec.dem.materials.size(),
                                  d.walls().walls().size(), d.dt(),
                                  spec.dem.params.dt > 0 ? "user" : "automatic", d.automatic_dt().dt,
                                  d.automatic_dt().limiter, d.stability_dt().dt,

@@ -221,10 +221,15 @@ io::RunReport Simulation::run(const RunOptions& opt) {
                               spec_.sph.viscosity, spec_.sph.diffusion, report.initial_dt.dt,
                               report.initial_dt.limiter));
     if (dem_)
-        log_.line(fmt::format("dem: {} grains, {:.4g} kg, {} walls; dt = {:.3g} s ({}; automatic "
+        log_.line(fmt::format("dem: {} grains{}, {:.4g} kg, {} walls; dt = {:.3g} s ({}; automatic "
                               "{:.3g} s){}",
-                              grains_.size(), grains_.total_mass(), dem_walls_.walls().size(),
-                              dem_->dt(), report.dem_dt.limiter, dem_->automatic_dt().dt,
+                              grains_.size(),
+                              grains_.clumps.empty() ? ""
+                                                     : fmt::format(" ({} of them in {} clumps)",
+                                                                   grains_.clumps.member_id.size(),
+                                                                   grains_.clumps.size()),
+                              grains_.total_mass(), dem_walls_.walls().size(), dem_->dt(),
+                              report.dem_dt.limiter, dem_->automatic_dt().dt,
                               spec_.dem.params.subcycle ? ", sub-cycled inside the SPH step" : ""));
     if (sph_dem_)
         log_.line(fmt::format("sph-dem: grains feel the fluid's pressure gradient and {} drag "
