@@ -132,3 +132,40 @@ TEST(DemLaws, StableStepCoversTheTangentialRotationalMode) {
         << normal.limiter;
     EXPECT_NE(normal.limiter.find("linear contact time"), std::string::npos) << normal.limiter;
 }
+
+// A free rigid body's contact sphere takes a second grain's place in the stable step, with the
+// body's compliance at the sphere: a body of a quarter of the grain's mass (one sphere of the
+// grain's radius at its centre of mass, I = 2/5 M r^2) gives m* = m/5 and the tangential
+// compliance 3.5/m + 14/m = 17.5/m, so with k_t = k_n the step is safety x pi /
+// sqrt(17.5 k_n / m), shorter than the grain pair's (sqrt(7 k_n / m)). Closed form as above;
+// 1e-12.
+TEST(DemLaws, StableStepCoversARigidBodysMassAndInertia) {
+    const Real pi = 3.14159265358979323846, kn = 1e5, r = 0.005;
+    dem::Material m;
+    m.name = "glass";
+    m.density = 2500;
+    m.kn = m.kt = kn;
+    m.restitution = 0.5;
+    DemRig rig;
+    const Real mass = DemRig::sphere_mass(m.density, r);
+    rig.grains.add({0, 0, 0.5}, {}, r, mass, 0.4 * mass * r * r, 0);
+    dem::DemParams p;
+    p.safety = 0.1;
+    p.gravity = {0, 0, 0};
+    rig.start(p, {m}, {-1, -1, -1}, {1, 1, 1});
+    const Real grains_only = rig.solver->automatic_dt().dt;
+    EXPECT_NEAR(grains_only / (0.1 * pi / std::sqrt(7 * kn / mass)), 1, 1e-12);
+    const Real body_mass = mass / 4, inv_i = 1 / (0.4 * body_mass * r * r);
+    dem::ObstacleSet body;
+    dem::ObstacleSphere s{{0, 0, 0}, {}, {}, r, body_mass, 0, 0};
+    s.normal_compliance = 1 / body_mass;
+    s.tangential_compliance = 1 / body_mass + r * r * inv_i;
+    s.rotational_compliance = inv_i;
+    body.spheres = {s};
+    body.body_com = {{0, 0, 0}};
+    rig.solver->attach_obstacles(&body);
+    const auto lim = rig.solver->automatic_dt();
+    EXPECT_NEAR(lim.dt / (0.1 * pi / std::sqrt(17.5 * kn / mass)), 1, 1e-12) << lim.limiter;
+    EXPECT_NE(lim.limiter.find("body"), std::string::npos) << lim.limiter;
+    EXPECT_NEAR(rig.solver->dt(), lim.dt, 0);
+}

@@ -9,7 +9,7 @@ namespace debrisflow::dem {
 time::DtLimit critical_dt(const GrainSet& grains, const std::vector<int>& wall_materials,
                           const std::vector<Material>& materials,
                           const std::vector<PairParams>& table, const DemParams& params,
-                          const sph::Domain& domain, Real safety) {
+                          const sph::Domain& domain, Real safety, const ObstacleSet* obstacles) {
     const Index n = grains.size();
     const int nm = int(materials.size());
     if (n == 0) return {std::numeric_limits<Real>::max(), "no grains"};
@@ -65,24 +65,54 @@ time::DtLimit critical_dt(const GrainSet& grains, const std::vector<int>& wall_m
         if (mmin[std::size_t(a)] < std::numeric_limits<Real>::max()) partners.push_back(a);
     const std::size_t grain_partners = partners.size();
     for (int m : wall_materials) partners.push_back(m);
+    const std::size_t wall_partners = partners.size();
+    // Rigid bodies' contact spheres, per material: the most compliant sphere of a free body
+    // (its compliances add to the grain's, as a second grain's would) and the smallest radius.
+    struct BodySide {
+        Real normal = 0, tangential = 0, rotational = 0, r = std::numeric_limits<Real>::max();
+    };
+    std::vector<BodySide> body(static_cast<std::size_t>(nm), BodySide{});
+    if (obstacles)
+        for (const auto& o : obstacles->spheres) {
+            if (o.material < 0 || o.material >= nm) continue;
+            BodySide& b = body[std::size_t(o.material)];
+            b.normal = std::max(b.normal, o.normal_compliance);
+            b.tangential = std::max(b.tangential, o.tangential_compliance);
+            b.rotational = std::max(b.rotational, o.rotational_compliance);
+            b.r = std::min(b.r, o.r);
+        }
+    for (int m = 0; m < nm; ++m)
+        if (body[std::size_t(m)].normal > 0) partners.push_back(m);
     for (int a = 0; a < nm; ++a) {
         if (mmin[std::size_t(a)] == std::numeric_limits<Real>::max()) continue;
         const Material& ma = materials[std::size_t(a)];
         for (std::size_t k = 0; k < partners.size(); ++k) {
             const int b = partners[k] < 0 ? a : partners[k];
-            const bool wall = k >= grain_partners;
+            const bool on_body = k >= wall_partners;
+            const bool wall = k >= grain_partners && !on_body;
             const PairParams& p = table[std::size_t(a * nm + b)];
             const Real m1 = mmin[std::size_t(a)], r1 = rmin[std::size_t(a)];
-            const Real meff = wall ? m1 : m1 * mmin[std::size_t(b)] / (m1 + mmin[std::size_t(b)]);
-            const Real reff = wall ? r1 : r1 * rmin[std::size_t(b)] / (r1 + rmin[std::size_t(b)]);
-            const std::string pair =
-                ma.name + "-" + (wall ? "wall" : materials[std::size_t(b)].name);
+            // the partner's compliances: none (a wall), a grain's, or a body sphere's
+            const BodySide& bs = body[std::size_t(b)];
+            const Real r2 = on_body ? bs.r : rmin[std::size_t(b)];
+            const Real meff = wall      ? m1
+                              : on_body ? 1 / (1 / m1 + bs.normal)
+                                        : m1 * mmin[std::size_t(b)] / (m1 + mmin[std::size_t(b)]);
+            const Real reff = wall ? r1 : r1 * r2 / (r1 + r2);
+            const std::string pair = ma.name + "-" +
+                                     (wall      ? std::string("wall")
+                                      : on_body ? "body (" + materials[std::size_t(b)].name + ")"
+                                                : materials[std::size_t(b)].name);
             // The contact's other modes, relative to its normal one (frequency ratios): the
             // tangential spring k_t acting on the contact point's compliance 1/m + r^2/I of
             // each side, and the EPSD rolling spring k_r = 2.25 k_n mu_r^2 R*^2 acting on 1/I
             // of each side (Iwashita & Oda 1998; Ai et al. 2011, eq. 13).
-            const Real c_t = ct[std::size_t(a)] + (wall ? 0 : ct[std::size_t(b)]);
-            const Real c_r = cr[std::size_t(a)] + (wall ? 0 : cr[std::size_t(b)]);
+            const Real c_t = ct[std::size_t(a)] + (wall      ? 0
+                                                   : on_body ? bs.tangential
+                                                             : ct[std::size_t(b)]);
+            const Real c_r = cr[std::size_t(a)] + (wall      ? 0
+                                                   : on_body ? bs.rotational
+                                                             : cr[std::size_t(b)]);
             const bool epsd = p.rolling == RollingId::epsd && p.mu_roll > 0;
             const Real rolling_ratio =
                 epsd ? std::sqrt(Real(2.25) * p.mu_roll * p.mu_roll * reff * reff * c_r * meff) : 0;

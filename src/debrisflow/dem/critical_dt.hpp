@@ -2,6 +2,7 @@
 #include "debrisflow/dem/dem_params.hpp"
 #include "debrisflow/dem/grain_set.hpp"
 #include "debrisflow/dem/materials.hpp"
+#include "debrisflow/dem/obstacles.hpp"
 #include "debrisflow/sph/sph_solver.hpp"
 #include "debrisflow/time/phase.hpp"
 #include <vector>
@@ -15,10 +16,13 @@ namespace debrisflow::dem {
 // 0.2 x the Rayleigh time pi r sqrt(rho/G) / (0.1631 nu + 0.8766). The contact's faster modes
 // shorten it: the tangential spring on the contact point's compliance sum(1/m + r^2/I) (sqrt(3.5)
 // times the normal frequency for spheres, sqrt(3) for discs, when k_t = k_n) and the EPSD
-// rolling spring on sum(1/I). Returns the step and the criterion (mode and pair) that limits it.
+// rolling spring on sum(1/I). With `obstacles`, the spheres of free rigid bodies are partners
+// too, with the body's compliance at the sphere (mass, and inertia with the lever arm) in place
+// of a second grain's. Returns the step and the criterion (mode and pair) that limits it.
 time::DtLimit critical_dt(const GrainSet& grains, const std::vector<int>& wall_materials,
                           const std::vector<Material>& materials,
                           const std::vector<PairParams>& table, const DemParams& params,
-                          const sph::Domain& domain, Real safety);
+                          const sph::Domain& domain, Real safety,
+                          const ObstacleSet* obstacles = nullptr);
 
 } // namespace debrisflow::dem

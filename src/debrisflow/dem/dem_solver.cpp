@@ -29,14 +29,9 @@ DemSolver::DemSolver(const DemParams& params, GrainSet& grains, WallSet& walls,
     map_clumps();
     for (Real r : grains_.radius) max_radius_ = std::max(max_radius_, r);
     skin_ = params_.skin * 2 * max_radius_;
-    const std::vector<int> wall_materials = [&] {
-        std::vector<int> m;
-        for (const auto& w : walls_.walls()) m.push_back(w.material);
-        return m;
-    }();
-    auto_dt_ =
-        critical_dt(grains_, wall_materials, materials_, table_, params_, domain_, params_.safety);
-    stability_dt_ = critical_dt(grains_, wall_materials, materials_, table_, params_, domain_,
+    auto_dt_ = critical_dt(grains_, wall_materials(), materials_, table_, params_, domain_,
+                           params_.safety);
+    stability_dt_ = critical_dt(grains_, wall_materials(), materials_, table_, params_, domain_,
                                 stability_fraction);
     dt_ = params_.dt > 0 ? params_.dt : auto_dt_.dt;
 }
@@ -480,6 +475,7 @@ void DemSolver::step(Real h) {
 }
 
 void DemSolver::build_obstacle_slots() {
+    if (obstacles_->spheres.size() != obstacle_spheres_timed_) include_bodies();
     obstacles_seen_ = obstacles_->version;
     obstacle_builds_seen_ = builds_;
     const auto& sph = obstacles_->spheres;
@@ -571,19 +567,33 @@ void DemSolver::grains_added(Index old_count) {
     for (Real r : grains_.radius) max_radius_ = std::max(max_radius_, r);
     skin_ = params_.skin * 2 * max_radius_;
     if (params_.dt <= 0) {
-        std::vector<int> wall_materials;
-        for (const auto& w : walls_.walls()) wall_materials.push_back(w.material);
-        const auto lim = critical_dt(grains_, wall_materials, materials_, table_, params_, domain_,
-                                     params_.safety);
+        const auto lim = critical_dt(grains_, wall_materials(), materials_, table_, params_,
+                                     domain_, params_.safety, obstacles_);
         if (lim.dt < auto_dt_.dt) auto_dt_ = lim;
         dt_ = auto_dt_.dt;
     }
     rebuild();
 }
 
+std::vector<int> DemSolver::wall_materials() const {
+    std::vector<int> m;
+    for (const auto& w : walls_.walls()) m.push_back(w.material);
+    return m;
+}
+
+void DemSolver::include_bodies() {
+    obstacle_spheres_timed_ = obstacles_->spheres.size();
+    const auto lim = critical_dt(grains_, wall_materials(), materials_, table_, params_, domain_,
+                                 params_.safety, obstacles_);
+    if (lim.dt < auto_dt_.dt) auto_dt_ = lim;
+    const auto stab = critical_dt(grains_, wall_materials(), materials_, table_, params_, domain_,
+                                  stability_fraction, obstacles_);
+    if (stab.dt < stability_dt_.dt) stability_dt_ = stab;
+    if (params_.dt <= 0) dt_ = auto_dt_.dt;
+}
+
 void DemSolver::include_sizes(const GrainSet& prototypes) {
-    std::vector<int> wall_materials;
-    for (const auto& w : walls_.walls()) wall_materials.push_back(w.material);
+    const std::vector<int> wall_materials = this->wall_materials();
     for (Real r : prototypes.radius) max_radius_ = std::max(max_radius_, r);
     skin_ = params_.skin * 2 * max_radius_;
     const auto lim = critical_dt(prototypes, wall_materials, materials_, table_, params_, domain_,

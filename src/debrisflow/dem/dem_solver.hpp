@@ -64,7 +64,11 @@ public:
     // feed will release later).
     void include_sizes(const GrainSet& prototypes);
     // Grains also collide with the spheres of rigid bodies in `o` (null: none).
-    void attach_obstacles(ObstacleSet* o) { obstacles_ = o; }
+    // The automatic step then covers their mass and inertia too.
+    void attach_obstacles(ObstacleSet* o) {
+        obstacles_ = o;
+        if (o && !o->spheres.empty()) include_bodies();
+    }
     // Grains also feel the fluid loads in `f` (null: none); the DEM keeps its arrays sized and
     // ordered with the grains and limits its sub-step to 0.5 m / beta (explicit drag).
     void attach_fluid(FluidLoad* f) {
@@ -105,6 +109,12 @@ private:
     void forces(Real half_kick, bool collect_obstacles = false);
     // Candidate grain-obstacle pairs within reach (rebuilt when either side moved).
     void build_obstacle_slots();
+    // Each wall's contact material (-1: the grain's own), for the stable step.
+    std::vector<int> wall_materials() const;
+    // Lowers the automatic step for the rigid bodies' contact spheres (their mass and inertia);
+    // run when their number changes.
+    void include_bodies();
+    std::size_t obstacle_spheres_timed_ = 0;
     // Whether grain i is outside the (non-periodic) domain or not finite.
     bool escaped(Index i) const;
     // Clumps (grains_.clumps): which clump each grain id belongs to (-1: a free grain) and

@@ -13,6 +13,10 @@ struct ObstacleSphere {
     Vec3 x, v, w;
     Real r, m;
     int material, body;
+    // The body's compliance at this sphere, for the DEM's stable step (0: an immovable body):
+    // normal 1/M + |c|^2/I_min, tangential 1/M + (|c| + r)^2/I_min, rotational 1/I_min, with
+    // c the sphere's offset from the body's centre of mass.
+    Real normal_compliance = 0, tangential_compliance = 0, rotational_compliance = 0;
 };
 static_assert(std::is_trivially_copyable_v<ObstacleSphere>);
 

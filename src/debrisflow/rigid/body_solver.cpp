@@ -2,6 +2,7 @@
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/core/stopwatch.hpp"
 #include "debrisflow/exec/parallel.hpp"
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
@@ -44,11 +45,25 @@ void BodySolver::update_obstacles() {
         const BodyState& s = bodies_[b];
         o.body_com[b] = s.pos;
         if (s.motion == Motion::removed) continue;
-        const Real m = s.motion == Motion::free ? s.mass : Real(1e20);
+        const bool free = s.motion == Motion::free;
+        const Real m = free ? s.mass : Real(1e20);
         const Vec3 w = s.omega();
+        // the most compliant rotation the body may take (locked world axes left out, which for
+        // a principal frame turning only about a locked axis's normal is exact, else an upper
+        // bound)
+        Real inv_i = 0;
+        for (int k = 0; k < 3; ++k)
+            if (!s.lock_rotation[std::size_t(k)]) inv_i = std::max(inv_i, s.inv_inertia[k]);
         for (const auto& sp : models_[b].samples) {
             const Vec3 x = s.to_world(sp.center);
-            o.spheres.push_back({x, s.point_velocity(x), w, sp.radius, m, s.material, int(b)});
+            dem::ObstacleSphere o_s{x, s.point_velocity(x), w, sp.radius, m, s.material, int(b)};
+            if (free) {
+                const Real c = norm(sp.center);
+                o_s.normal_compliance = 1 / s.mass + c * c * inv_i;
+                o_s.tangential_compliance = 1 / s.mass + (c + sp.radius) * (c + sp.radius) * inv_i;
+                o_s.rotational_compliance = inv_i;
+            }
+            o.spheres.push_back(o_s);
         }
     }
     ++o.version;
