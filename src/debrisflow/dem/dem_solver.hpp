@@ -49,6 +49,12 @@ public:
     void rebuild_now() { rebuild(); }
     // Removes a wall (a gate opening): its contacts end at the next step.
     void remove_wall(int wall);
+    // The clump grain i belongs to (-1: a free grain), and where the grain of a given id is
+    // now (valid while the case has clumps).
+    std::int32_t clump_of(Index i) const {
+        return clump_of_id_.empty() ? -1 : clump_of_id_[grains_.id[std::size_t(i)]];
+    }
+    Index index_of_id(std::uint32_t id) const { return index_of_id_[id]; }
     // Clears keep[i] for every member of a clump that has a member with keep[i] == 0: a clump
     // leaves whole. Call before counting what remove_grains will take.
     void expand_to_clumps(std::vector<std::uint8_t>& keep) const;

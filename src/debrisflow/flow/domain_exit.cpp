@@ -115,17 +115,16 @@ std::string DomainExit::apply(sph::SphSolver* fluid, dem::DemSolver* grains, Rea
             grains->expand_to_clumps(keep);
             const auto& cl = g.clumps;
             if (!cl.empty()) {
-                std::vector<Index> where(g.next_id(), -1);
-                for (Index i = 0; i < n; ++i) where[g.id[std::size_t(i)]] = i;
+                auto where = [&](std::uint32_t id) { return grains->index_of_id(id); };
                 for (Index c = 0; c < cl.size(); ++c) {
                     const std::size_t b = cl.first[std::size_t(c)],
                                       e = cl.first[std::size_t(c) + 1];
                     int crossed = -1;
                     for (std::size_t m = b; m < e; ++m)
-                        crossed = std::max(crossed, face[std::size_t(where[cl.member_id[m]])]);
+                        crossed = std::max(crossed, face[std::size_t(where(cl.member_id[m]))]);
                     if (crossed < 0) continue;
                     for (std::size_t m = b; m < e; ++m) {
-                        int& f = face[std::size_t(where[cl.member_id[m]])];
+                        int& f = face[std::size_t(where(cl.member_id[m]))];
                         if (f < 0) f = crossed;
                     }
                 }

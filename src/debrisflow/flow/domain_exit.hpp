@@ -22,8 +22,8 @@ struct ExitTally {
 extern const std::array<const char*, 6> face_names; // "xmin", "xmax", ...
 
 // Removes the fluid particles and grains outside the domain (io::DomainExitSpec, policy
-// "remove") and keeps the
-// tally; with policy "stop" it does nothing and the solvers' health checks stop the run.
+// "remove") and keeps the tally; with policy "stop" it does nothing and the solvers' health
+// checks stop the run.
 class DomainExit {
 public:
     DomainExit(const io::DomainExitSpec& spec, const sph::Domain& domain, int dim)

@@ -50,8 +50,6 @@ std::vector<Real> KineticEnergyProbe::sample(Real, const ProbeContext& ctx) {
     long n = 0;
     // a clump counts once, by its centre of mass: (1/2) M V^2 and (1/2) w . L
     const auto& cl = g.clumps;
-    std::vector<std::uint8_t> member(cl.empty() ? 0 : g.next_id(), 0);
-    for (std::uint32_t id : cl.member_id) member[id] = 1;
     for (Index c = 0; c < cl.size(); ++c) {
         const std::size_t k = std::size_t(c);
         if (!inside({cl.pos[k].x, cl.pos[k].y, cl.pos[k].z}, lo_, hi_)) continue;
@@ -61,7 +59,7 @@ std::vector<Real> KineticEnergyProbe::sample(Real, const ProbeContext& ctx) {
     }
     for (Index i = 0; i < g.size(); ++i) {
         const std::size_t k = std::size_t(i);
-        if (!member.empty() && member[g.id[k]]) continue;
+        if (ctx.dem->clump_of(i) >= 0) continue;
         if (!inside({g.pos[k].x, g.pos[k].y, g.pos[k].z}, lo_, hi_)) continue;
         ek += 0.5 * g.mass[k] *
               (g.vel[k].x * g.vel[k].x + g.vel[k].y * g.vel[k].y + g.vel[k].z * g.vel[k].z);
