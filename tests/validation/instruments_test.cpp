@@ -3,8 +3,7 @@
 //  - trapping efficiency and outlet counts with grains in free flight: E = caught / passed;
 //  - a solid feed releases its target discharge Q_s t (within one grain) from a log-normal
 //    size distribution, and its grains settle in a bin;
-//  - pressure map on a tank wall at rest: hydrostatic rho g (H - z) per panel, and panels
-//    summing to the wall force.
+// (The pressure map's tests are in pressure_map_test.cpp.)
 #include "run_case.hpp"
 #include <cmath>
 #include <fmt/format.h>
@@ -127,82 +126,6 @@ every = 0.01
     EXPECT_NEAR(q[2], 7 * m, 1e-12);          // cumulative solid discharge downstream
     EXPECT_NEAR(pile[1], 7 * m, 1e-12);       // the seven survivors end in x in [2, 3]
     EXPECT_EQ(sim.grains().grains().size(), 7);
-}
-
-TEST(Instruments, PressureMapOnTankWallIsHydrostatic) {
-    const double H = 0.3, dp = 0.01;
-    app::Simulation sim(test::case_from_toml("tank_map", fmt::format(R"(
-dimensions = 2
-dp = {0}
-[time]
-end = 0.5
-[output]
-vtk = false
-[domain]
-min = [-0.1, -0.1]
-max = [0.5, 0.5]
-[sph]
-c0 = 20
-viscosity = "artificial"
-alpha = 0.1
-[[fluid]]
-name = "water"
-shape = "box"
-min = [0, 0]
-max = [0.4, {1}]
-[[wall]]
-name = "floor"
-shape = "box"
-min = [-0.1, -0.1]
-max = [0.5, 0]
-[[wall]]
-name = "left"
-shape = "box"
-min = [-0.1, 0]
-max = [0, 0.45]
-[[wall]]
-name = "right"
-shape = "box"
-min = [0.4, 0]
-max = [0.5, 0.45]
-[[probe]]
-name = "map"
-type = "pressure_map"
-wall = "right"
-axis = "x"
-normal = [-1, 0]
-panels = [9, 1]
-every = 0.05
-[[probe]]
-name = "F"
-type = "wall_force"
-wall = "right"
-every = 0.05
-)",
-                                                                     dp, H)));
-    sim.run({"", true, 0});
-    const auto& p = sim.probe("map").finals();
-    const double panel = 0.45 / 9;
-    double sum = 0;
-    for (int k = 0; k < 9; ++k) sum += p[std::size_t(k)] * panel;
-    const double fx = sim.probe("F").finals()[0];
-    std::cout << fmt::format(
-        "panel sum {:.3f} N/m vs wall Fx {:.3f} N/m (rho g H^2 / 2 = {:.3f})\n", sum, fx,
-        1000 * 9.81 * H * H / 2);
-    // The panels partition the wall's particles: their loads add up to the wall force.
-    EXPECT_NEAR(sum, fx, 1e-6 * std::abs(fx));
-    // Panels fully under water and clear of the floor corner (z from 0.05 to 0.25 m):
-    // hydrostatic mean pressure rho g (H - z_c) within 5 % (the DBC wall pressure accuracy of
-    // the hydrostatic test). The bottom panel (0-0.05 m) reads 5.8 % low: within a kernel
-    // support (2h = 0.03 m) of the corner the fluid also pushes on the floor wall's particles,
-    // which belong to the other wall.
-    for (int k = 1; k < 5; ++k) {
-        const double zc = (k + 0.5) * panel, exact = 1000 * 9.81 * (H - zc);
-        std::cout << fmt::format("  panel {} (z = {:.3f} m): {:.1f} Pa vs {:.1f} Pa ({:+.1f} %)\n",
-                                 k, zc, p[std::size_t(k)], exact,
-                                 100 * (p[std::size_t(k)] - exact) / exact);
-        EXPECT_NEAR(p[std::size_t(k)], exact, 0.05 * exact);
-    }
 }
 
 TEST(Instruments, SolidFeedReleasesTargetDischarge) {

@@ -273,6 +273,17 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
     auto& wl = walls_.walls();
     const std::size_t nw = wl.size();
     std::vector<Real> wall_sum(6 * nw, 0);
+    bool record = false; // some wall keeps its contacts' loads (a pressure map reads them)
+    for (auto& w : wl) {
+        w.contacts.clear();
+        record = record || w.record_contacts;
+    }
+    struct RecordedLoad {
+        Index grain;
+        std::size_t wall;
+        ContactLoad load;
+    };
+    std::vector<RecordedLoad> recorded;
     const Index wcap = wall_slots_.capacity();
     const Index* wp = wall_slots_.partners();
     const Index* wcount = wall_slots_.counts();
@@ -312,6 +323,7 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
 #pragma omp parallel reduction(+ : touching, fsum) if (n > parallel_min)
     {
         std::vector<Real> local(6 * nw, 0), obody(6 * nb, 0);
+        std::vector<RecordedLoad> local_loads;
 #pragma omp for schedule(static)
         for (Index i = 0; i < n; ++i) {
             // a clump member's force is its contacts'; gravity acts on the clump
@@ -382,6 +394,8 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
                     Real* ws = local.data() + 6 * w;
                     ws[0] -= c2.force.x, ws[1] -= c2.force.y, ws[2] -= c2.force.z;
                     ws[3] += m.x, ws[4] += m.y, ws[5] += m.z;
+                    if (record && wl[w].record_contacts)
+                        local_loads.push_back({i, w, {cand.q[c], -1 * c2.force}});
                     fsum += norm(c2.force);
                     ++touching;
                 }
@@ -432,7 +446,13 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
         {
             for (std::size_t k = 0; k < local.size(); ++k) wall_sum[k] += local[k];
             for (std::size_t k = 0; k < obody.size(); ++k) body_sum[k] += obody[k];
+            recorded.insert(recorded.end(), local_loads.begin(), local_loads.end());
         }
+    }
+    if (record) { // in grain order, whatever order the threads finished in
+        std::stable_sort(recorded.begin(), recorded.end(),
+                         [](const auto& a, const auto& b) { return a.grain < b.grain; });
+        for (const auto& r : recorded) wl[r.wall].contacts.push_back(r.load);
     }
     if (clump_of) clump_forces(half_kick);
     if (obstacles_ && (ends_step || collect_obstacles) && current_h_ > 0) {

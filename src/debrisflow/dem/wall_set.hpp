@@ -10,6 +10,11 @@ namespace debrisflow::dem {
 
 // A named geometric wall: planes and/or triangles moving with a prescribed velocity, removable
 // at a time (a gate). Its contact force and moment (about `origin`) are summed every step.
+// One contact's load on a wall: where it acts and the force on the wall [N].
+struct ContactLoad {
+    Vec3 point, force;
+};
+
 struct Wall {
     std::string name;
     int material = -1; // -1: contacts use the grain's own material
@@ -20,6 +25,10 @@ struct Wall {
     Vec3 force, moment; // on the wall from the grains, last step [N], [N m]
     Vec3 impulse;       // time integral of force since the last reset_impulse() [N s]
     Real impulse_time = 0;
+    // Pressure maps need each contact's point: with record_contacts the last force evaluation's
+    // grain contacts on this wall are kept in `contacts` (ordered by grain).
+    bool record_contacts = false;
+    std::vector<ContactLoad> contacts;
 };
 
 // The moving nodes under nodal triangles: positions and velocities set by the owner (the

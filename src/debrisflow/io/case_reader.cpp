@@ -192,8 +192,10 @@ ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
                                     c.t_end / p.every, c.t_end));
     const bool fluid_probe = p.type == "pressure" || p.type == "velocity" || p.type == "gauge" ||
                              p.type == "front" || p.type == "flow_section" ||
-                             p.type == "fluid_runup" || p.type == "pressure_map";
+                             p.type == "fluid_runup";
     if (fluid_probe && c.fluids.empty()) t.fail("type", "a " + p.type + " probe needs a fluid");
+    if (p.type == "pressure_map" && c.fluids.empty() && !c.has_dem && !c.has_bodies())
+        t.fail("type", "a pressure_map probe needs a fluid, grains or bodies");
     const bool grain_probe = p.type == "section" || p.type == "kinetic_energy" ||
                              p.type == "runup" || p.type == "mass_flux";
     if (grain_probe && !c.has_dem) t.fail("type", "a " + p.type + " probe needs [[grains]]");
@@ -281,8 +283,14 @@ ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
             t.fail("type", "a domain_exit probe counts what domain.exit = \"remove\" removes; "
                            "domain.exit is \"stop\"");
     } else if (p.type == "front") {
-        const std::string a = t.choice("axis", {"x", "y", "z"}, "x");
-        p.axis = a == "x" ? 0 : (a == "y" ? 1 : 2);
+        // "+x" (or "x"): the largest x of the fluid; "-x": the smallest (a surge running
+        // towards -x)
+        const std::string a =
+            t.choice("axis", {"x", "y", "z", "+x", "+y", "+z", "-x", "-y", "-z"}, "x");
+        p.axis = a.back() == 'x' ? 0 : (a.back() == 'y' ? 1 : 2);
+        p.normal = {};
+        p.normal[p.axis] = a.front() == '-' ? -1 : 1;
+        if (c.dim == 2 && p.axis == 1) t.fail("axis", "2D cases flow in the x-z plane");
     } else {
         p.wall = t.string("wall");
         bool found = false;
@@ -314,6 +322,12 @@ ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
                     t.fail("boulder", "no body probe named \"" + p.boulder + "\" above this one");
             }
         } else if (p.type == "pressure_map") {
+            const auto& w = *std::find_if(c.walls.begin(), c.walls.end(),
+                                          [&](const auto& w) { return w.name == p.wall; });
+            if (w.type == "plane" || w.type == "stl")
+                t.fail("wall", "a pressure map tiles a face of the wall's bounding box; wall \"" +
+                                   p.wall + "\" is a " + w.type +
+                                   " (use a box, an open_tank or a [[structure]])");
             const std::string a = t.choice("axis", {"x", "y", "z"}, "x");
             p.axis = a == "x" ? 0 : (a == "y" ? 1 : 2);
             p.normal = t.vec3("normal", c.dim, {});

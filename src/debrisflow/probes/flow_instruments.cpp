@@ -3,7 +3,6 @@
 #include "debrisflow/rigid/body_solver.hpp"
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 namespace debrisflow::probes {
 
@@ -181,73 +180,6 @@ std::vector<Real> FluidRunupProbe::sample(Real, const ProbeContext& ctx) {
         top = std::max(top, s.z[i] + Real(0.5) * dp_ - bed_);
     }
     return {top};
-}
-
-PressureMapProbe::PressureMapProbe(const io::ProbeSpec& s, int wall, const io::WallSpec& w,
-                                   const io::CaseSpec& c)
-    : Probe(s.name, s.every), wall_(wall), axis_(s.axis), nu_(s.panels_u), nv_(s.panels_v),
-      normal_(s.normal), lo_(w.shape.min), hi_(w.shape.max), dim_(c.dim) {
-    // The face's axes: the two others in order (2D: u = the in-plane one, v = y, one panel).
-    const int others[3][2] = {{1, 2}, {0, 2}, {0, 1}};
-    u_ = others[axis_][0], v_ = others[axis_][1];
-    if (dim_ == 2) {
-        u_ = axis_ == 0 ? 2 : 0, v_ = 1, nv_ = 1;
-        lo_.y = Real(-0.5), hi_.y = Real(0.5);
-    }
-}
-
-std::vector<std::string> PressureMapProbe::columns() const {
-    std::vector<std::string> c;
-    for (int i = 0; i < nu_; ++i)
-        for (int j = 0; j < nv_; ++j) c.push_back(fmt::format("p_{}_{} [Pa]", i, j));
-    return c;
-}
-
-std::vector<Real> PressureMapProbe::sample(Real, const ProbeContext& ctx) {
-    const auto& s = ctx.sph->particles();
-    std::vector<Real> f(std::size_t(nu_ * nv_), 0);
-    const Real du = (hi_[u_] - lo_[u_]) / nu_, dv = (hi_[v_] - lo_[v_]) / nv_;
-    for (Index i = 0; i < s.size(); ++i) {
-        if (s.kind[i] == 0 || s.group[i] != wall_) continue;
-        const Vec3 x{s.x[i], s.y[i], s.z[i]};
-        const int iu = std::clamp(int((x[u_] - lo_[u_]) / du), 0, nu_ - 1);
-        const int iv = dim_ == 2 ? 0 : std::clamp(int((x[v_] - lo_[v_]) / dv), 0, nv_ - 1);
-        const Vec3 a{s.ax[i], s.ay[i], s.az[i]};
-        f[std::size_t(iu * nv_ + iv)] -= s.mass[i] * dot(a, normal_);
-    }
-    for (auto& p : f) p /= du * dv;
-    return f;
-}
-
-} // namespace debrisflow::probes
-
-namespace debrisflow::probes {
-
-void PressureMapProbe::open_extra(const std::string& dir) {
-    // dir is OUT/probes: the frames go beside the particle frames in OUT/vtk.
-    vtk_ = std::make_unique<io::VtkSeries>(dir + "/../vtk", name());
-}
-
-void PressureMapProbe::after_sample(Real t, const std::vector<Real>& p) {
-    if (!vtk_) return;
-    const Real du = (hi_[u_] - lo_[u_]) / nu_, dv = (hi_[v_] - lo_[v_]) / nv_;
-    // The face: the wall's bounding-box side that the normal points out of.
-    const Real face = normal_[axis_] < 0 ? lo_[axis_] : hi_[axis_];
-    std::vector<Vec3> x;
-    std::vector<float> pressure, force, area;
-    for (int i = 0; i < nu_; ++i)
-        for (int j = 0; j < nv_; ++j) {
-            Vec3 c;
-            c[axis_] = face;
-            c[u_] = lo_[u_] + (i + Real(0.5)) * du;
-            c[v_] = dim_ == 2 ? 0 : lo_[v_] + (j + Real(0.5)) * dv;
-            x.push_back(c);
-            const Real pij = p[std::size_t(i * nv_ + j)];
-            pressure.push_back(float(pij));
-            force.push_back(float(pij * du * dv));
-            area.push_back(float(du * dv));
-        }
-    vtk_->write(x, {{"pressure", pressure}, {"force", force}, {"area", area}}, t);
 }
 
 } // namespace debrisflow::probes

@@ -1,5 +1,4 @@
 #pragma once
-#include "debrisflow/io/vtk_writer.hpp"
 #include "debrisflow/probes/probe.hpp"
 #include <unordered_map>
 
@@ -109,31 +108,6 @@ public:
 private:
     Vec3 lo_, hi_;
     Real bed_, dp_;
-    int dim_;
-};
-
-// Fluid load map on a structure face: the wall's boundary-particle forces m_k a_k, their
-// component along -normal (normal into the fluid), binned into n_u x n_v panels over the
-// wall's bounding box in the two axes other than `axis` (2D: n_u panels over z), divided by
-// the panel area: mean pressure per panel [Pa]. Panels are named p_<iu>_<iv>. With output, each
-// sample is also a VTK frame (vtk/<name>.pvd: panel centres on the face with pressure, force
-// and area).
-class PressureMapProbe : public Probe {
-public:
-    PressureMapProbe(const io::ProbeSpec& s, int wall, const io::WallSpec& w,
-                     const io::CaseSpec& c);
-    std::vector<std::string> columns() const override;
-    std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
-    // Panel centres (u, v) [m] for plotting: column k is panel (k / n_v, k % n_v).
-    int axis_u() const { return u_; }
-    int axis_v() const { return v_; }
-    void open_extra(const std::string& dir) override;
-    void after_sample(Real t, const std::vector<Real>& values) override;
-
-private:
-    std::unique_ptr<io::VtkSeries> vtk_;
-    int wall_, axis_, u_, v_, nu_, nv_;
-    Vec3 normal_, lo_, hi_;
     int dim_;
 };
 

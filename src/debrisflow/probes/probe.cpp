@@ -4,6 +4,7 @@
 #include "debrisflow/probes/dem_probes.hpp"
 #include "debrisflow/probes/fem_probes.hpp"
 #include "debrisflow/probes/flow_instruments.hpp"
+#include "debrisflow/probes/pressure_map.hpp"
 #include "debrisflow/probes/flow_probes.hpp"
 #include "debrisflow/probes/sph_probes.hpp"
 #include "debrisflow/probes/wall_force_probe.hpp"

@@ -58,10 +58,10 @@ std::vector<Real> GaugeProbe::sample_fluid(const sph::SphSolver& solver) const {
 std::vector<Real> FrontProbe::sample_fluid(const sph::SphSolver& solver) const {
     const auto& s = solver.particles();
     const std::vector<Real>& c = axis_ == 0 ? s.x : (axis_ == 1 ? s.y : s.z);
-    Real m = -std::numeric_limits<Real>::max();
+    Real m = -std::numeric_limits<Real>::max(); // the largest of sign * coordinate
     for (Index i = 0; i < s.size(); ++i)
-        if (s.kind[i] == std::uint8_t(particles::Kind::fluid)) m = std::max(m, c[i]);
-    return {m};
+        if (s.kind[i] == std::uint8_t(particles::Kind::fluid)) m = std::max(m, sign_ * c[i]);
+    return {sign_ * m};
 }
 
 Vec3 fluid_wall_force(const sph::SphSolver& solver, int group) {

@@ -65,10 +65,13 @@ private:
     Real dz_;
 };
 
-// Surge-front position: the largest coordinate of any fluid particle along an axis.
+// Surge-front position along an axis: the largest coordinate of any fluid particle, or with a
+// negative direction ("-x") the smallest (a surge running towards -x). The position of the
+// particle centre, without the dp/2 a particle stands for.
 class FrontProbe : public FluidProbe {
 public:
-    explicit FrontProbe(const io::ProbeSpec& s) : FluidProbe(s.name, s.every), axis_(s.axis) {}
+    explicit FrontProbe(const io::ProbeSpec& s)
+        : FluidProbe(s.name, s.every), axis_(s.axis), sign_(s.normal[s.axis] < 0 ? -1 : 1) {}
     std::vector<std::string> columns() const override {
         return {std::string(1, "xyz"[axis_]) + "_front [m]"};
     }
@@ -76,6 +79,7 @@ public:
 
 private:
     int axis_;
+    Real sign_;
 };
 
 } // namespace debrisflow::probes

@@ -140,6 +140,7 @@ Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<Bo
     std::unordered_map<SideKey, std::int8_t, SideKeyHash> side_next;
     // Body-wall: vertices and exact spheres against every active primitive.
     wall_force_.assign(walls ? walls->walls().size() : 0, Vec3{});
+    wall_contacts_.assign(wall_force_.size(), {});
     node_force_.assign(walls ? walls->nodes().x.size() : 0, Vec3{});
     if (walls && !walls->empty()) {
         const auto& prims = walls->primitives();
@@ -240,6 +241,8 @@ Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<Bo
                         elapsed);
                     const Vec3 reaction = before - loads[bi].contact_force;
                     wall_force_[std::size_t(wall)] += reaction;
+                    if (wl[wall].record_contacts)
+                        wall_contacts_[std::size_t(wall)].push_back({h.point, reaction});
                     if (pr.corners >= 0) {
                         const auto& nc = walls->corners()[std::size_t(pr.corners)];
                         for (int a = 0; a < 3; ++a)

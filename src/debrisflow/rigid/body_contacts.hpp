@@ -40,6 +40,10 @@ public:
     Real imminent_dt() const { return imminent_dt_; }
     // Force of the bodies on each geometric wall in the last evaluation [N].
     const std::vector<Vec3>& wall_forces() const { return wall_force_; }
+    // Each contact's load on wall w (walls with record_contacts only), last evaluation.
+    const std::vector<std::vector<dem::ContactLoad>>& wall_contacts() const {
+        return wall_contacts_;
+    }
     // Force of the bodies on each moving node of nodal walls (dem::WallSet::nodes()) [N].
     const std::vector<Vec3>& node_forces() const { return node_force_; }
     // Strongest single contact of each body in the last evaluation.
@@ -78,6 +82,7 @@ private:
     std::vector<Real> rate_;           // summed contact stiffness x compliance per body [1/s^2]
     Real imminent_dt_ = 0;
     std::vector<Vec3> wall_force_, node_force_;
+    std::vector<std::vector<dem::ContactLoad>> wall_contacts_;
     std::vector<StrongestContact> strongest_;
 };
 

@@ -106,6 +106,12 @@ public:
         const auto& f = contacts_.wall_forces();
         return std::size_t(w) < f.size() ? f[std::size_t(w)] : Vec3{};
     }
+    // Each body contact's load on wall w (a wall with record_contacts), last evaluation.
+    const std::vector<dem::ContactLoad>& wall_contacts(int w) const {
+        static const std::vector<dem::ContactLoad> none;
+        const auto& c = contacts_.wall_contacts();
+        return std::size_t(w) < c.size() ? c[std::size_t(w)] : none;
+    }
     Real time() const { return t_; }
     // Kinetic energy and world angular momentum of body b (about its centre of mass).
     Real kinetic_energy(int b) const;

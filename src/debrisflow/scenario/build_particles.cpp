@@ -6,7 +6,9 @@
 #include "debrisflow/scenario/stl_mesh.hpp"
 #include <cmath>
 #include <fmt/format.h>
+#include <functional>
 #include <limits>
+#include <memory>
 #include <string>
 #include <unordered_map>
 
@@ -255,6 +257,37 @@ ParticleId build_particles(const io::CaseSpec& c, particles::ParticleSet& set,
     }
     for (const auto& b : bodies)
         for (const auto& sp : b.sph_points) boundary.push_back(sp.p);
+    // A wall's boundary particles are a shell of `layers` around a solid: fluid blocks that
+    // overlap a solid wall (a block, a structure, the ground behind a plane, a closed mesh)
+    // start outside it, not trapped inside the shell.
+    std::vector<std::function<bool(Vec3)>> solid_walls;
+    for (const auto& w : c.walls) {
+        const bool plane2 = c.dim == 2;
+        auto in_box = [plane2](Vec3 p, Vec3 lo, Vec3 hi) {
+            for (int d = 0; d < 3; ++d)
+                if (!(plane2 && d == 1) && !(p[d] > lo[d] && p[d] < hi[d])) return false;
+            return true;
+        };
+        if (w.type == "box") {
+            solid_walls.push_back([=](Vec3 p) { return in_box(p, w.shape.min, w.shape.max); });
+        } else if (w.type == "boxes") {
+            solid_walls.push_back([=, boxes = w.boxes](Vec3 p) {
+                for (const auto& b : boxes)
+                    if (in_box(p, b[0], b[1])) return true;
+                return false;
+            });
+        } else if (w.type == "plane") {
+            solid_walls.push_back([=](Vec3 p) { return dot(p - w.point, w.normal) < 0; });
+        } else if (w.type == "stl") {
+            auto mesh = std::make_shared<TriangleMesh>(
+                TriangleMesh::read_stl(w.shape.file, w.shape.scale, w.shape.offset));
+            Vec3 lo, hi;
+            mesh->bounds(lo, hi);
+            solid_walls.push_back([=](Vec3 p) {
+                return in_box(p, lo, hi) && mesh->contains(p); // the box first: it is cheap
+            });
+        }
+    }
     const Real g = norm(sph.gravity);
     const Vec3 down = g > 0 ? (1 / g) * sph.gravity : Vec3{0, 0, -1};
     struct Column {
@@ -270,6 +303,8 @@ ParticleId build_particles(const io::CaseSpec& c, particles::ParticleSet& set,
         std::erase_if(pts, [&](Vec3 p) {
             for (const auto& b : bodies)
                 if (b.inside(p)) return true;
+            for (const auto& in_wall : solid_walls)
+                if (in_wall(p)) return true;
             return false;
         });
         if (pts.empty())

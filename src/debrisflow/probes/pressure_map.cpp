@@ -1,0 +1,145 @@
+#include "debrisflow/probes/pressure_map.hpp"
+#include "debrisflow/dem/dem_solver.hpp"
+#include "debrisflow/rigid/body_solver.hpp"
+#include "debrisflow/sph/sph_solver.hpp"
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+namespace debrisflow::probes {
+
+PressureMapProbe::PressureMapProbe(const io::ProbeSpec& s, int wall, const io::WallSpec& w,
+                                   const io::CaseSpec& c)
+    : Probe(s.name, s.every), wall_(wall), axis_(s.axis), nu_(s.panels_u), nv_(s.panels_v),
+      normal_(s.normal), lo_(w.shape.min), hi_(w.shape.max), dp_(c.dp), dim_(c.dim) {
+    // The face's axes: the two others in order (2D: u = the in-plane one, v = y, one panel).
+    const int others[3][2] = {{1, 2}, {0, 2}, {0, 1}};
+    u_ = others[axis_][0], v_ = others[axis_][1];
+    if (dim_ == 2) {
+        u_ = axis_ == 0 ? 2 : 0, v_ = 1, nv_ = 1;
+        lo_.y = Real(-0.5), hi_.y = Real(0.5);
+    }
+    face_ = normal_[axis_] < 0 ? lo_[axis_] : hi_[axis_];
+    depth_ = Real(0.5) * (hi_[axis_] - lo_[axis_]);
+    // 2D grains are discs of the case's thickness: per metre, their force is F / thickness
+    // (the fluid and bodies of a 2D case are per metre already).
+    grain_scale_ = dim_ == 2 && c.dem.thickness > 0 ? 1 / c.dem.thickness : 1;
+}
+
+std::vector<std::string> PressureMapProbe::columns() const {
+    std::vector<std::string> c;
+    for (int i = 0; i < nu_; ++i)
+        for (int j = 0; j < nv_; ++j) c.push_back(fmt::format("p_{}_{} [Pa]", i, j));
+    return c;
+}
+
+long PressureMapProbe::panel_of(Real u, Real v) const {
+    const Real du = (hi_[u_] - lo_[u_]) / nu_, dv = (hi_[v_] - lo_[v_]) / nv_;
+    const Real fu = (u - lo_[u_]) / du, fv = dim_ == 2 ? 0 : (v - lo_[v_]) / dv;
+    if (!(fu >= 0 && fu <= nu_ && fv >= 0 && fv <= nv_)) return -1;
+    const int iu = std::min(int(fu), nu_ - 1), iv = std::min(int(fv), nv_ - 1);
+    return long(iu) * nv_ + iv;
+}
+
+void PressureMapProbe::spread(Real u0, Real u1, Real v0, Real v1, Real load, Real tile_area,
+                              std::vector<Real>& force, std::vector<Real>& area) const {
+    const Real du = (hi_[u_] - lo_[u_]) / nu_, dv = (hi_[v_] - lo_[v_]) / nv_;
+    const int a0 = std::max(0, int(std::floor((u0 - lo_[u_]) / du)));
+    const int a1 = std::min(nu_ - 1, int(std::floor((u1 - lo_[u_]) / du)));
+    const int b0 = dim_ == 2 ? 0 : std::max(0, int(std::floor((v0 - lo_[v_]) / dv)));
+    const int b1 = dim_ == 2 ? 0 : std::min(nv_ - 1, int(std::floor((v1 - lo_[v_]) / dv)));
+    const Real tu = u1 - u0, tv = v1 - v0;
+    for (int a = a0; a <= a1; ++a) {
+        const Real pu0 = lo_[u_] + a * du;
+        const Real ou = std::min(u1, pu0 + du) - std::max(u0, pu0);
+        if (ou <= 0) continue;
+        for (int b = b0; b <= b1; ++b) {
+            Real ov = tv;
+            if (dim_ == 3) {
+                const Real pv0 = lo_[v_] + b * dv;
+                ov = std::min(v1, pv0 + dv) - std::max(v0, pv0);
+                if (ov <= 0) continue;
+            }
+            const Real share = (ou / tu) * (ov / tv);
+            const std::size_t k = std::size_t(a * nv_ + b);
+            force[k] += share * load;
+            area[k] += share * tile_area;
+        }
+    }
+}
+
+std::vector<Real> PressureMapProbe::sample(Real, const ProbeContext& ctx) {
+    const std::size_t np = std::size_t(nu_) * std::size_t(nv_);
+    std::vector<Real> force(np, 0), tiles(np, 0);
+    if (ctx.sph) {
+        const auto& s = ctx.sph->particles();
+        const Real half = Real(0.5) * dp_;
+        const Real tile_area = dim_ == 2 ? dp_ : dp_ * dp_; // 2D: per metre of width
+        for (Index i = 0; i < s.size(); ++i) {
+            if (s.kind[i] == 0 || s.group[i] != wall_) continue;
+            // This face's particles only (a solid's back face does not load its front panels):
+            // those that stand for it, and those of the side faces on this face's half of the
+            // wall, which the fluid in a corner pushes along the normal too; the side faces'
+            // surface-layer column (a box's corner column) is part of this face's extent.
+            const Vec3 x{s.x[i], s.y[i], s.z[i]};
+            const Real along = s.wnx[i] * normal_.x + s.wny[i] * normal_.y + s.wnz[i] * normal_.z;
+            const Real from_face = std::abs(x[axis_] - face_);
+            const bool side = std::abs(along) < Real(0.5) && from_face < depth_;
+            const bool edge = side && from_face < dp_;
+            if (along < Real(0.5) && !side) continue;
+            const Real load =
+                -s.mass[i] * (s.ax[i] * normal_.x + s.ay[i] * normal_.y + s.az[i] * normal_.z);
+            // the column's tile counts once, at its surface-layer particle (depth dp/2)
+            const Real a = edge || (!side && s.wd[i] < dp_) ? tile_area : 0;
+            spread(x[u_] - half, x[u_] + half, x[v_] - half, x[v_] + half, load, a, force, tiles);
+        }
+    }
+    auto add_contact = [&](const dem::ContactLoad& c, Real scale) {
+        if (!(std::abs(c.point[axis_] - face_) <= depth_)) return; // another face of the wall
+        const long k = panel_of(c.point[u_], c.point[v_]);
+        if (k >= 0) force[std::size_t(k)] -= scale * dot(c.force, normal_);
+    };
+    if (ctx.dem)
+        for (const auto& c : ctx.dem->walls().walls()[std::size_t(wall_)].contacts)
+            add_contact(c, grain_scale_);
+    if (ctx.rigid)
+        for (const auto& c : ctx.rigid->wall_contacts(wall_)) add_contact(c, 1);
+    const Real du = (hi_[u_] - lo_[u_]) / nu_, dv = (hi_[v_] - lo_[v_]) / nv_;
+    const Real geometric = dim_ == 2 ? du : du * dv; // 2D: per metre
+    area_.resize(np);
+    std::vector<Real> p(np);
+    for (std::size_t k = 0; k < np; ++k) {
+        // a sliver of tile (< 1 % of the panel) at the face's edge is not a panel's area
+        area_[k] = tiles[k] > Real(0.01) * geometric ? tiles[k] : geometric;
+        p[k] = force[k] / area_[k];
+    }
+    force_ = std::move(force);
+    return p;
+}
+
+void PressureMapProbe::open_extra(const std::string& dir) {
+    // dir is OUT/probes: the frames go beside the particle frames in OUT/vtk.
+    vtk_ = std::make_unique<io::VtkSeries>(dir + "/../vtk", name());
+}
+
+void PressureMapProbe::after_sample(Real t, const std::vector<Real>& p) {
+    if (!vtk_) return;
+    const Real du = (hi_[u_] - lo_[u_]) / nu_, dv = (hi_[v_] - lo_[v_]) / nv_;
+    std::vector<Vec3> x;
+    std::vector<float> pressure, force, area;
+    for (int i = 0; i < nu_; ++i)
+        for (int j = 0; j < nv_; ++j) {
+            Vec3 c;
+            c[axis_] = face_;
+            c[u_] = lo_[u_] + (i + Real(0.5)) * du;
+            c[v_] = dim_ == 2 ? 0 : lo_[v_] + (j + Real(0.5)) * dv;
+            x.push_back(c);
+            const std::size_t k = std::size_t(i * nv_ + j);
+            pressure.push_back(float(p[k]));
+            force.push_back(float(force_[k]));
+            area.push_back(float(area_[k]));
+        }
+    vtk_->write(x, {{"pressure", pressure}, {"force", force}, {"area", area}}, t);
+}
+
+} // namespace debrisflow::probes
