@@ -121,8 +121,9 @@ min = [0.1, 0]
 max = [0.3, 0.15]
 )"));
     const auto& s = sim.particles();
-    for (Index i = 0; i < s.size(); ++i)
-        if (s.kind[i] == 0)
-            EXPECT_FALSE(s.x[i] > 0.1 && s.x[i] < 0.3 && s.z[i] < 0.15)
-                << "fluid at (" << s.x[i] << ", " << s.z[i] << ") inside the block";
+    for (Index i = 0; i < s.size(); ++i) {
+        if (s.kind[i] != 0) continue;
+        EXPECT_FALSE(s.x[i] > 0.1 && s.x[i] < 0.3 && s.z[i] < 0.15)
+            << "fluid at (" << s.x[i] << ", " << s.z[i] << ") inside the block";
+    }
 }

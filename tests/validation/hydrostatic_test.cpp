@@ -10,11 +10,10 @@ using namespace debrisflow;
 
 namespace {
 
-std::string tank_case(int dim, double dp, double width, double depth) {
+std::string tank_case(int dim, double dp, double width, double depth, const std::string& boundary) {
     const std::string y = dim == 3 ? fmt::format("{}, ", 0.0) : "";
     const std::string yw = dim == 3 ? fmt::format("{}, ", width) : "";
-    std::string s =
-        fmt::format(R"(
+    std::string s = fmt::format(R"(
 dimensions = {0}
 dp = {1}
 [time]
@@ -30,6 +29,7 @@ reference_depth = {3}
 viscosity = "artificial"
 alpha = 0.05
 diffusion = "fourtakas"
+boundary = "{11}"
 [[fluid]]
 name = "water"
 shape = "box"
@@ -41,8 +41,9 @@ shape = "open_tank"
 min = [0, {4}0]
 max = [{2}, {5}{10}]
 )",
-                    dim, dp, width, depth, y, yw, dim == 3 ? "-0.05, " : "", width + 0.05,
-                    dim == 3 ? fmt::format("{}, ", width + 0.05) : "", depth + 0.1, depth + 0.05);
+                                dim, dp, width, depth, y, yw, dim == 3 ? "-0.05, " : "",
+                                width + 0.05, dim == 3 ? fmt::format("{}, ", width + 0.05) : "",
+                                depth + 0.1, depth + 0.05, boundary);
     for (double z : {0.25, 0.5, 0.75})
         s += fmt::format("[[probe]]\nname = \"p{0:.0f}\"\ntype = \"pressure\"\nposition = [{1}, "
                          "{2}{3}]\nevery = 0.01\n",
@@ -53,9 +54,10 @@ max = [{2}, {5}{10}]
 
 enum class Check { pressure, drift };
 
-void check_tank(int dim, double dp, double width, double depth, Check check) {
-    app::Simulation sim(
-        test::case_from_toml(fmt::format("hydrostatic{}d", dim), tank_case(dim, dp, width, depth)));
+void check_tank(int dim, double dp, double width, double depth, Check check,
+                const std::string& boundary = "dbc") {
+    app::Simulation sim(test::case_from_toml(fmt::format("hydrostatic{}d_{}", dim, boundary),
+                                             tank_case(dim, dp, width, depth, boundary)));
     // Settle for 0.75 s, then measure the drift over the next 0.75 s.
     sim.run({"", true, 0, 0.75});
     std::map<ParticleId, Vec3> start;
@@ -75,12 +77,26 @@ void check_tank(int dim, double dp, double width, double depth, Check check) {
                                      p->name(), mean, expected, 100 * (mean - expected) / expected);
         }
     if (check != Check::drift) return;
-    double max_drift = 0;
+    double max_drift = 0, lowest = 1e9, nearest_side = 1e9;
     for (Index i = 0; i < s.size(); ++i)
-        if (s.kind[i] == 0)
+        if (s.kind[i] == 0) {
             max_drift = std::max(max_drift, norm(Vec3{s.x[i], s.y[i], s.z[i]} - start[s.id[i]]));
+            lowest = std::min(lowest, s.z[i]);
+            nearest_side = std::min({nearest_side, s.x[i], width - s.x[i]});
+        }
+    // The gap between the fluid and the wall: how much further than dp/2 (where the lattice
+    // starts it) the nearest fluid particle centre stands from the wall surface.
+    const double floor_gap = lowest - 0.5 * dp, side_gap = nearest_side - 0.5 * dp;
+    std::cout << fmt::format("{}D {}: drift {:.3f} dp, gap at the floor {:.2f} dp, at the side "
+                             "walls {:.2f} dp\n",
+                             dim, boundary, max_drift / dp, floor_gap / dp, side_gap / dp);
     // Tolerance: 0.1 dp (issue #2, validation 1).
     EXPECT_LT(max_drift, 0.1 * dp) << "worst particle drift " << max_drift / dp << " dp";
+    // Issue #29: the gap at the wall <= 0.6 dp with mDBC.
+    if (boundary == "mdbc") {
+        EXPECT_LE(floor_gap, 0.6 * dp);
+        EXPECT_LE(side_gap, 0.6 * dp);
+    }
 }
 
 } // namespace
@@ -95,4 +111,17 @@ TEST(Hydrostatic, Pressure3D) {
 // that moves particles ~0.5 dp in 0.75 s. Run with: ctest -L known_gap
 TEST(HydrostaticKnownGap, Drift2D) {
     check_tank(2, 0.005, 0.2, 0.2, Check::drift);
+}
+
+// mDBC (English et al. 2022): the hydrostatic pressure with the boundary density mirrored from
+// the fluid, same tolerance.
+TEST(Hydrostatic, Pressure2DMdbc) {
+    check_tank(2, 0.005, 0.2, 0.2, Check::pressure, "mdbc");
+}
+// Known gap (docs/validation.md): mDBC does not remove the drift either (0.53 dp over 0.75 s;
+// DBC 0.46 dp). The column is still settling from its lattice start: a vertical breathing mode
+// first, then a circulation that sinks along the side walls at ~2 mm/s at 0.75 s. Issue #29
+// asks <= 0.1 dp.
+TEST(HydrostaticKnownGap, Drift2DMdbc) {
+    check_tank(2, 0.005, 0.2, 0.2, Check::drift, "mdbc");
 }

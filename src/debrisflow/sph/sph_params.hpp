@@ -37,6 +37,9 @@ struct SphParams {
     // 2007 clamp at p = 0 by default); negative values let fully immersed bodies feel the
     // suction behind them when the fluid has no hydrostatic background.
     Real boundary_min_pressure = 0;
+    // Boundary particles' density: "dbc" (continuity, Crespo et al. 2007) or "mdbc" (mirrored
+    // from the fluid at a ghost node, English et al. 2022; particles with wall geometry).
+    std::string boundary = "dbc";
 };
 
 } // namespace debrisflow::sph

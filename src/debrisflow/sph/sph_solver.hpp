@@ -60,6 +60,9 @@ public:
 
 private:
     void update_pressure();
+    // mDBC: every boundary particle with wall geometry takes the density mirrored from the
+    // fluid at its ghost node (MdbcDensity); run before the pressures of a force evaluation.
+    void update_boundary_density();
     Real boundary_min_density() const;
     // Laminar+SPS constants (C_s dp)^2 and 2/3 C_I dp^2 (zeros for other viscosities).
     struct SpsConstants {
