@@ -114,9 +114,16 @@ void write_summary(const std::string& path, const CaseSpec& spec, const RunRepor
         for (std::size_t c = 0; c < cols.size(); ++c) {
             const bool any = p.has_samples();
             o << (c ? ", " : "") << quoted(cols[c])
-              << fmt::format(": {{\"peak\": {}, \"peak_time\": {}, \"final\": {}}}",
+              << fmt::format(": {{\"peak\": {}, \"peak_time\": {}, \"final\": {}",
                              any ? num(p.peaks()[c]) : "null", any ? num(p.peak_time(c)) : "null",
                              any ? num(p.finals()[c]) : "null");
+            // the peak as sensors that average over 1, 5 and 20 ms would read it
+            for (const auto& [key, w] :
+                 {std::pair{"peak_mean_1ms", 0.001}, std::pair{"peak_mean_5ms", 0.005},
+                  std::pair{"peak_mean_20ms", 0.02}}) {
+                o << ", \"" << key << "\": " << num(any ? p.peak_window_mean(c, Real(w)) : NAN);
+            }
+            o << "}";
         }
         o << "}";
     }

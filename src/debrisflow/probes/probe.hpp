@@ -62,6 +62,10 @@ public:
     const std::vector<std::vector<Real>>& history() const { return history_; }
     // Mean of a column over samples with t0 <= t <= t1.
     Real mean(std::size_t column, Real t0, Real t1) const;
+    // Largest mean of a column over any window [t - window, t] within the run (the samples
+    // joined linearly): what a sensor that averages over `window` would peak at. NaN when the
+    // samples are too sparse for the window (every > window / 2) or the run is shorter.
+    Real peak_window_mean(std::size_t column, Real window) const;
 
 protected:
     Probe(std::string name, Real every) : name_(std::move(name)), every_(every) {}
