@@ -54,3 +54,44 @@ TEST(DamBreakLobovsky, Sensor1ArrivalAndPlateau) {
     // Source: Lobovsky et al. 2014; tolerance 15 % (issue #2).
     EXPECT_NEAR(p_sim, p_exp, 0.15 * p_exp);
 }
+
+// Known gap (docs/validation.md, "The impact peak is acoustic"): the impact peak at sensor 1,
+// sampled at 20 kHz as in the experiment, against the event of Lobovsky et al.'s Fig. 18 in
+// ../shared/reference (p/(rho g H) = 3.04; 2.67 as a 5 ms moving mean). The folder holds one
+// event, not the scatter of the repeats, so the band is that event +-25 % (our choice, stated
+// here). Measured at this test's dp = 6 mm: 21.3 (peak) and 9.1 (5 ms mean); the peak is the water
+// hammer rho c0 u and grows with c0 (tools/impact_peak_study.py).
+TEST(DamBreakLobovskyKnownGap, Sensor1Peak) {
+    const double t_scale = std::sqrt(H / g);
+    app::Simulation sim(io::read_case(std::string(DEBRISFLOW_SOURCE_DIR) + "/cases/dambreak2d.toml",
+                                      {"dp=0.006", fmt::format("time.end={}", 3.5 * t_scale),
+                                       "probe.0.every=0.00005", "output.vtk=false"}));
+    sim.run({"", true, 0});
+    const auto& probe = sim.probe("sensor1");
+    const double peak = probe.peaks()[0] / (rho0 * g * H);
+    const double mean5 = probe.peak_window_mean(0, 0.005) / (rho0 * g * H);
+    // the experiment's event, and its 5 ms moving mean by the trapezoid rule
+    const auto exp = test::read_curve(
+        test::reference("dambreak_2d_lobovsky2014/Fig18_peak_event_5_sensors_5.dat"));
+    double exp_peak = 0, exp_mean5 = 0;
+    std::vector<double> t, integral{0};
+    for (std::size_t k = 0; k < exp.size(); ++k) {
+        t.push_back(exp[k].first * t_scale);
+        exp_peak = std::max(exp_peak, exp[k].second);
+        if (k > 0)
+            integral.push_back(integral.back() +
+                               0.5 * (t[k] - t[k - 1]) * (exp[k].second + exp[k - 1].second));
+    }
+    for (std::size_t k = 0, j = 0; k < t.size(); ++k) {
+        if (t[k] - 0.005 < t[0]) continue;
+        while (t[j + 1] <= t[k] - 0.005) ++j;
+        const double f = (t[k] - 0.005 - t[j]) / (t[j + 1] - t[j]);
+        const double start = integral[j] + f * (integral[j + 1] - integral[j]);
+        exp_mean5 = std::max(exp_mean5, (integral[k] - start) / 0.005);
+    }
+    std::cout << fmt::format("Lobovsky sensor 1 peak: {:.2f} (event {:.2f}); 5 ms mean {:.2f} "
+                             "(event {:.2f})\n",
+                             peak, exp_peak, mean5, exp_mean5);
+    EXPECT_NEAR(peak, exp_peak, 0.25 * exp_peak);
+    EXPECT_NEAR(mean5, exp_mean5, 0.25 * exp_mean5);
+}
