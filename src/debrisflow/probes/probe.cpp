@@ -59,34 +59,37 @@ Real Probe::mean(std::size_t column, Real t0, Real t1) const {
     return n ? sum / Real(n) : std::numeric_limits<Real>::quiet_NaN();
 }
 
-Real Probe::peak_window_mean(std::size_t column, Real window) const {
-    const Real nan = std::numeric_limits<Real>::quiet_NaN();
-    if (history_.size() < 2 || every_ > Real(0.5) * window) return nan;
+Real peak_moving_mean(const std::vector<Real>& t, const std::vector<Real>& v, Real window) {
+    Real best = std::numeric_limits<Real>::quiet_NaN();
+    if (t.size() < 2) return best;
     // integral from the first sample by the trapezoid rule, at every sample
-    std::vector<Real> t(history_.size()), integral(history_.size(), 0);
-    for (std::size_t k = 0; k < history_.size(); ++k) {
-        t[k] = history_[k][0];
-        if (k > 0)
-            integral[k] =
-                integral[k - 1] + Real(0.5) * (t[k] - t[k - 1]) *
-                                      (history_[k][column + 1] + history_[k - 1][column + 1]);
-    }
-    auto integral_at = [&](Real x, std::size_t hint) { // the integral at x (samples joined
-        while (hint > 0 && t[hint] > x) --hint;        // linearly), hint: a sample after x
+    std::vector<Real> integral(t.size(), 0);
+    for (std::size_t k = 1; k < t.size(); ++k)
+        integral[k] = integral[k - 1] + Real(0.5) * (t[k] - t[k - 1]) * (v[k] + v[k - 1]);
+    // the integral at x, the samples joined linearly; hint: a sample at or after x
+    auto integral_at = [&](Real x, std::size_t hint) {
+        while (hint > 0 && t[hint] > x) --hint;
         const std::size_t a = hint, b = std::min(hint + 1, t.size() - 1);
         if (b == a || t[b] == t[a]) return integral[a];
-        const Real f = (x - t[a]) / (t[b] - t[a]);
-        const Real va = history_[a][column + 1], vb = history_[b][column + 1];
-        const Real vx = va + f * (vb - va);
-        return integral[a] + Real(0.5) * (x - t[a]) * (va + vx);
+        const Real vx = v[a] + (x - t[a]) / (t[b] - t[a]) * (v[b] - v[a]);
+        return integral[a] + Real(0.5) * (x - t[a]) * (v[a] + vx);
     };
-    Real best = nan;
     for (std::size_t k = 1; k < t.size(); ++k) {
         if (t[k] - window < t[0] - Real(1e-12)) continue;
         const Real m = (integral[k] - integral_at(t[k] - window, k)) / window;
         if (!(m <= best)) best = m;
     }
     return best;
+}
+
+Real Probe::peak_window_mean(std::size_t column, Real window) const {
+    if (every_ > Real(0.5) * window) return std::numeric_limits<Real>::quiet_NaN();
+    std::vector<Real> t, v;
+    for (const auto& row : history_) {
+        t.push_back(row[0]);
+        v.push_back(row[column + 1]);
+    }
+    return peak_moving_mean(t, v, window);
 }
 
 std::unique_ptr<Probe> make_probe(const io::ProbeSpec& s, const io::CaseSpec& c) {

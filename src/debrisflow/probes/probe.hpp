@@ -31,6 +31,10 @@ struct ProbeContext {
     const flow::DomainExit* domain_exit = nullptr; // what left the domain
 };
 
+// Largest mean of the series (t_k, v_k), joined linearly, over any window [t - window, t]
+// with t - window >= t_0; NaN when the series is shorter than the window.
+Real peak_moving_mean(const std::vector<Real>& t, const std::vector<Real>& v, Real window);
+
 // A measurement taken on a schedule and written to probes/<name>.csv (first column time [s]).
 // Peak (largest value) and final value of every column go to summary.json.
 class Probe {
