@@ -19,8 +19,13 @@ PressureMapProbe::PressureMapProbe(const io::ProbeSpec& s, int wall, const io::W
         u_ = axis_ == 0 ? 2 : 0, v_ = 1, nv_ = 1;
         lo_.y = Real(-0.5), hi_.y = Real(0.5);
     }
-    face_ = normal_[axis_] < 0 ? lo_[axis_] : hi_[axis_];
+    // The face the fluid loads: a solid's (box, structure) side facing along the normal; a
+    // tank's (open_tank, channel) inner side facing along it, i.e. the box's opposite side.
+    const bool solid = w.type == "box" || w.type == "boxes";
+    face_ = (normal_[axis_] < 0) == solid ? lo_[axis_] : hi_[axis_];
     depth_ = Real(0.5) * (hi_[axis_] - lo_[axis_]);
+    // side-face particles count within a kernel support of the face (and on its half)
+    reach_ = std::min(depth_, c.fluids.empty() ? Real(0) : 2 * c.sph.h);
     // 2D grains are discs of the case's thickness: per metre, their force is F / thickness
     // (the fluid and bodies of a 2D case are per metre already).
     grain_scale_ = dim_ == 2 && c.dem.thickness > 0 ? 1 / c.dem.thickness : 1;
@@ -78,13 +83,14 @@ std::vector<Real> PressureMapProbe::sample(Real, const ProbeContext& ctx) {
         for (Index i = 0; i < s.size(); ++i) {
             if (s.kind[i] == 0 || s.group[i] != wall_) continue;
             // This face's particles only (a solid's back face does not load its front panels):
-            // those that stand for it, and those of the side faces on this face's half of the
-            // wall, which the fluid in a corner pushes along the normal too; the side faces'
-            // surface-layer column (a box's corner column) is part of this face's extent.
+            // those that stand for it, and those of the side faces within a kernel support of
+            // it (and on its half of the wall), which the fluid in a corner pushes along the
+            // normal too; the side faces' surface-layer column (a box's corner column) is part
+            // of this face's extent.
             const Vec3 x{s.x[i], s.y[i], s.z[i]};
             const Real along = s.wnx[i] * normal_.x + s.wny[i] * normal_.y + s.wnz[i] * normal_.z;
             const Real from_face = std::abs(x[axis_] - face_);
-            const bool side = std::abs(along) < Real(0.5) && from_face < depth_;
+            const bool side = std::abs(along) < Real(0.5) && from_face < reach_;
             const bool edge = side && from_face < dp_;
             if (along < Real(0.5) && !side) continue;
             const Real load =

@@ -5,7 +5,8 @@
 namespace debrisflow::probes {
 
 // Load map on one face of a structure, as a grid of flush-mounted load cells reads it. The face
-// is the side of the wall's bounding box that `normal` (into the fluid) points out of, tiled by
+// is the side of the wall's bounding box that `normal` (into the fluid) points out of (for a
+// tank, whose box is the inside, the side the normal points into the tank from), tiled by
 // n_u x n_v panels over the box in the two other axes (2D: n_u panels along the in-plane axis).
 //  - Fluid: the wall's boundary particles that stand for this face (their wall normal is the
 //    face's), each with its load -m_k a_k . n; a particle column owns the tile dp x dp (2D:
@@ -36,6 +37,7 @@ private:
     int wall_, axis_, u_, v_, nu_, nv_;
     Vec3 normal_, lo_, hi_;
     Real face_, depth_; // the face's coordinate along axis; half the box's depth there
+    Real reach_;        // side-face particles within this of the face load it: min(depth, 2h)
     Real dp_, grain_scale_;
     int dim_;
     std::vector<Real> force_, area_;
