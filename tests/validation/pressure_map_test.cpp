@@ -22,6 +22,16 @@ double hydrostatic_mean(double rho_g, double H, double z0, double z1) {
     };
     return rho_g * (prim(z1) - prim(z0)) / (z1 - z0);
 }
+// What a panel over z0..z1 can read at resolution dp: the hydrostatic pressure at the rows of
+// particles (z_j = (j + 1/2) dp, j < rows) it overlaps, weighted by the overlap.
+double hydrostatic_at_rows(double rho_g, double H, double dp, int rows, double z0, double z1) {
+    double w = 0, p = 0;
+    for (int j = 0; j < rows; ++j) {
+        const double o = std::min(z1, (j + 1) * dp) - std::max(z0, j * dp);
+        if (o > 0) w += o, p += o * rho_g * (H - (j + 0.5) * dp);
+    }
+    return p / w;
+}
 } // namespace
 
 TEST(PressureMap, StillTankReadsHydrostaticAtEveryPanelSize) {
@@ -113,14 +123,7 @@ every = 0.05
             mean += p[std::size_t(k)] / n;
             const double z0 = k * du, z1 = z0 + du, zc = 0.5 * (z0 + z1);
             if (zc < 3 * dp || z1 > H - 5 * dp) continue;
-            // what the panel can read at resolution dp: the hydrostatic pressure at the rows
-            // of particles (z_j = (j + 1/2) dp) it overlaps, weighted by the overlap
-            double w = 0, exact = 0;
-            for (int j = 0; j < 45; ++j) {
-                const double o = std::min(z1, (j + 1) * dp) - std::max(z0, j * dp);
-                if (o > 0) w += o, exact += o * rho_g * (H - (j + 0.5) * dp);
-            }
-            exact /= w;
+            const double exact = hydrostatic_at_rows(rho_g, H, dp, 45, z0, z1);
             EXPECT_NEAR(p[std::size_t(k)], exact, 0.01 * exact)
                 << n << " panels, panel " << k << " (z = " << zc << " m)";
             ++checked;
@@ -299,12 +302,7 @@ every = 0.05
     const double dz = 0.2 / 8;
     for (int iv = 1; iv <= 3; ++iv) {
         const double z0 = iv * dz, z1 = z0 + dz;
-        double w = 0, exact = 0;
-        for (int j = 0; j < 15; ++j) {
-            const double o = std::min(z1, (j + 1) * dp) - std::max(z0, j * dp);
-            if (o > 0) w += o, exact += o * rho_g * (H - (j + 0.5) * dp);
-        }
-        exact /= w;
+        const double exact = hydrostatic_at_rows(rho_g, H, dp, 15, z0, z1);
         const double mid = p[std::size_t(1 * 8 + iv)];
         std::cout << fmt::format("z = {:.4f} m: middle {:.1f} Pa vs {:.1f} Pa ({:+.1f} %); sides "
                                  "{:.1f}, {:.1f} Pa\n",

@@ -23,6 +23,7 @@ PressureMapProbe::PressureMapProbe(const io::ProbeSpec& s, int wall, const io::W
     // tank's (open_tank, channel) inner side facing along it, i.e. the box's opposite side.
     const bool solid = w.type == "box" || w.type == "boxes";
     face_ = (normal_[axis_] < 0) == solid ? lo_[axis_] : hi_[axis_];
+    du_ = (hi_[u_] - lo_[u_]) / nu_, dv_ = (hi_[v_] - lo_[v_]) / nv_;
     depth_ = Real(0.5) * (hi_[axis_] - lo_[axis_]);
     // side-face particles count within a kernel support of the face (and on its half)
     reach_ = std::min(depth_, c.fluids.empty() ? Real(0) : 2 * c.sph.h);
@@ -39,8 +40,7 @@ std::vector<std::string> PressureMapProbe::columns() const {
 }
 
 long PressureMapProbe::panel_of(Real u, Real v) const {
-    const Real du = (hi_[u_] - lo_[u_]) / nu_, dv = (hi_[v_] - lo_[v_]) / nv_;
-    const Real fu = (u - lo_[u_]) / du, fv = dim_ == 2 ? 0 : (v - lo_[v_]) / dv;
+    const Real fu = (u - lo_[u_]) / du_, fv = dim_ == 2 ? 0 : (v - lo_[v_]) / dv_;
     if (!(fu >= 0 && fu <= nu_ && fv >= 0 && fv <= nv_)) return -1;
     const int iu = std::min(int(fu), nu_ - 1), iv = std::min(int(fv), nv_ - 1);
     return long(iu) * nv_ + iv;
@@ -48,21 +48,20 @@ long PressureMapProbe::panel_of(Real u, Real v) const {
 
 void PressureMapProbe::spread(Real u0, Real u1, Real v0, Real v1, Real load, Real tile_area,
                               std::vector<Real>& force, std::vector<Real>& area) const {
-    const Real du = (hi_[u_] - lo_[u_]) / nu_, dv = (hi_[v_] - lo_[v_]) / nv_;
-    const int a0 = std::max(0, int(std::floor((u0 - lo_[u_]) / du)));
-    const int a1 = std::min(nu_ - 1, int(std::floor((u1 - lo_[u_]) / du)));
-    const int b0 = dim_ == 2 ? 0 : std::max(0, int(std::floor((v0 - lo_[v_]) / dv)));
-    const int b1 = dim_ == 2 ? 0 : std::min(nv_ - 1, int(std::floor((v1 - lo_[v_]) / dv)));
+    const int a0 = std::max(0, int(std::floor((u0 - lo_[u_]) / du_)));
+    const int a1 = std::min(nu_ - 1, int(std::floor((u1 - lo_[u_]) / du_)));
+    const int b0 = dim_ == 2 ? 0 : std::max(0, int(std::floor((v0 - lo_[v_]) / dv_)));
+    const int b1 = dim_ == 2 ? 0 : std::min(nv_ - 1, int(std::floor((v1 - lo_[v_]) / dv_)));
     const Real tu = u1 - u0, tv = v1 - v0;
     for (int a = a0; a <= a1; ++a) {
-        const Real pu0 = lo_[u_] + a * du;
-        const Real ou = std::min(u1, pu0 + du) - std::max(u0, pu0);
+        const Real pu0 = lo_[u_] + a * du_;
+        const Real ou = std::min(u1, pu0 + du_) - std::max(u0, pu0);
         if (ou <= 0) continue;
         for (int b = b0; b <= b1; ++b) {
             Real ov = tv;
             if (dim_ == 3) {
-                const Real pv0 = lo_[v_] + b * dv;
-                ov = std::min(v1, pv0 + dv) - std::max(v0, pv0);
+                const Real pv0 = lo_[v_] + b * dv_;
+                ov = std::min(v1, pv0 + dv_) - std::max(v0, pv0);
                 if (ov <= 0) continue;
             }
             const Real share = (ou / tu) * (ov / tv);
@@ -110,8 +109,7 @@ std::vector<Real> PressureMapProbe::sample(Real, const ProbeContext& ctx) {
             add_contact(c, grain_scale_);
     if (ctx.rigid)
         for (const auto& c : ctx.rigid->wall_contacts(wall_)) add_contact(c, 1);
-    const Real du = (hi_[u_] - lo_[u_]) / nu_, dv = (hi_[v_] - lo_[v_]) / nv_;
-    const Real geometric = dim_ == 2 ? du : du * dv; // 2D: per metre
+    const Real geometric = dim_ == 2 ? du_ : du_ * dv_; // 2D: per metre
     area_.resize(np);
     std::vector<Real> p(np);
     for (std::size_t k = 0; k < np; ++k) {
@@ -130,15 +128,14 @@ void PressureMapProbe::open_extra(const std::string& dir) {
 
 void PressureMapProbe::after_sample(Real t, const std::vector<Real>& p) {
     if (!vtk_) return;
-    const Real du = (hi_[u_] - lo_[u_]) / nu_, dv = (hi_[v_] - lo_[v_]) / nv_;
     std::vector<Vec3> x;
     std::vector<float> pressure, force, area;
     for (int i = 0; i < nu_; ++i)
         for (int j = 0; j < nv_; ++j) {
             Vec3 c;
             c[axis_] = face_;
-            c[u_] = lo_[u_] + (i + Real(0.5)) * du;
-            c[v_] = dim_ == 2 ? 0 : lo_[v_] + (j + Real(0.5)) * dv;
+            c[u_] = lo_[u_] + (i + Real(0.5)) * du_;
+            c[v_] = dim_ == 2 ? 0 : lo_[v_] + (j + Real(0.5)) * dv_;
             x.push_back(c);
             const std::size_t k = std::size_t(i * nv_ + j);
             pressure.push_back(float(p[k]));

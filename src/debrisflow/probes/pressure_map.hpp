@@ -37,6 +37,7 @@ private:
     int wall_, axis_, u_, v_, nu_, nv_;
     Vec3 normal_, lo_, hi_;
     Real face_, depth_; // the face's coordinate along axis; half the box's depth there
+    Real du_, dv_;      // panel size along u and v
     Real reach_;        // side-face particles within this of the face load it: min(depth, 2h)
     Real dp_, grain_scale_;
     int dim_;
