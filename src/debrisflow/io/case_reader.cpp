@@ -1,4 +1,5 @@
 #include "debrisflow/core/error.hpp"
+#include "debrisflow/io/box_extent.hpp"
 #include "debrisflow/io/case_spec.hpp"
 #include "debrisflow/io/config_table.hpp"
 #include "debrisflow/io/dem_reader.hpp"
@@ -30,6 +31,8 @@ ShapeSpec read_shape(const ConfigTable& t, int dim, const std::vector<std::strin
                 t.fail("max", fmt::format("must exceed min in {} ({} <= {})", "xyz"[d], s.max[d],
                                           s.min[d]));
         }
+        if (const auto why = unresolvable_box(s.min, s.max, dim); !why.empty())
+            t.fail("max", "the box " + why);
     } else if (s.type == "cylinder") {
         s.center = t.vec3("center", dim);
         s.radius = t.positive("radius");

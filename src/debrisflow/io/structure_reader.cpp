@@ -1,4 +1,5 @@
 #include "debrisflow/io/structure_reader.hpp"
+#include "debrisflow/io/box_extent.hpp"
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -48,8 +49,15 @@ std::vector<Box> flume(const ConfigTable& t, const CaseSpec& c, Real thick) {
     if (t.has("roughness_height")) {
         const Real kh = t.positive("roughness_height"), ks = t.positive("roughness_spacing");
         const Real rib = t.positive("roughness_length", kh);
-        for (Real x = x0 + Real(0.5) * ks; x + rib <= x0 + L; x += ks)
+        const Real ribs = std::floor((L - rib - Real(0.5) * ks) / ks) + 1;
+        if (ribs > max_structure_boxes)
+            t.fail("roughness_spacing",
+                   fmt::format("makes {:.3g} ribs over the {} m flume (at most {})", ribs, L,
+                               max_structure_boxes));
+        for (long k = 0; k < long(ribs); ++k) {
+            const Real x = x0 + (Real(k) + Real(0.5)) * ks;
             b.push_back(box({x, 0, bed}, {x + rib, W, bed + kh}));
+        }
     }
     return b;
 }
@@ -73,7 +81,8 @@ std::vector<Box> slit_dam(const ConfigTable& t, const CaseSpec& c, Real& density
     const Real th = t.positive("thickness"), H = t.positive("height");
     const Real W = t.positive("width"), s = t.positive("slit_width");
     const long N = t.integer("slits", 0);
-    if (N < 1 || N > 10000) t.fail("slits", "required, within 1..10000");
+    if (N < 1 || 2 * (N + 1) > max_structure_boxes)
+        t.fail("slits", fmt::format("required, within 1..{}", max_structure_boxes / 2 - 1));
     const Real post = (W - N * s) / Real(N + 1);
     if (!(post > 0))
         t.fail("slit_width", fmt::format("{} slits of {} m do not fit in {} m", N, s, W));
@@ -107,6 +116,9 @@ std::vector<Box> baffles(const ConfigTable& t, const CaseSpec& c) {
     const long rows = t.integer("rows", 0), per_row = t.integer("per_row", 0);
     if (rows < 1 || rows > 10000) t.fail("rows", "required, within 1..10000");
     if (per_row < 1 || per_row > 10000) t.fail("per_row", "required, within 1..10000");
+    if (rows * per_row > max_structure_boxes)
+        t.fail("per_row", fmt::format("{} rows of {} baffles exceed the {} boxes a case may hold",
+                                      rows, per_row, max_structure_boxes));
     const Real dx = rows > 1 ? t.positive("row_spacing") : t.real("row_spacing", 0);
     const Vec3 size = t.vec3("size", 3);
     if (!(size.x > 0 && size.z > 0 && (c.dim == 2 || size.y > 0)))
@@ -134,7 +146,13 @@ std::vector<Box> baffles(const ConfigTable& t, const CaseSpec& c) {
 // `orifice` wide across x (3D: the slot spans y); the floor (with `remove_at`) can be a gate.
 std::vector<Box> hopper(const ConfigTable& t, const CaseSpec& c, Real thick) {
     Vec3 lo = t.vec3("min", c.dim), hi = t.vec3("max", c.dim);
+    for (int d = 0; d < 3; ++d)
+        if (!(c.dim == 2 && d == 1) && !(hi[d] > lo[d]))
+            t.fail("max", fmt::format("must exceed min in {}", "xyz"[d]));
     const Real orifice = t.real("orifice", 0);
+    if (!(orifice >= 0 && orifice < hi.x - lo.x))
+        t.fail("orifice",
+               fmt::format("must be within [0, {}) m, the hopper's width in x", hi.x - lo.x));
     const Real xm = Real(0.5) * (lo.x + hi.x);
     std::vector<Box> b;
     if (c.dim == 2) lo.y = hi.y = 0;
@@ -170,6 +188,7 @@ Vec3 flume_gravity(const ConfigTable& root, Vec3 gravity) {
 void read_structures(const ConfigTable& root, CaseSpec& c) {
     const Real support = 2 * c.sph.h;
     const bool fluid = !c.fluids.empty();
+    long boxes_so_far = 0;
     for (const auto& t : root.tables("structure")) {
         WallSpec w;
         w.origin = t.origin();
@@ -215,6 +234,13 @@ void read_structures(const ConfigTable& root, CaseSpec& c) {
                 }))
                 t.fail("material", "no [[material]] named \"" + w.material + "\"");
         }
+        boxes_so_far += long(w.boxes.size());
+        if (boxes_so_far > max_structure_boxes)
+            t.fail("type", fmt::format("the structures expand into more than {} boxes",
+                                       max_structure_boxes));
+        for (const auto& b : w.boxes)
+            if (const auto why = unresolvable_box(b[0], b[1], c.dim); !why.empty())
+                t.fail("type", fmt::format("the {} makes a box {}", w.structure, why));
         // Bounding box (the wall's origin for moments; shape extents).
         w.shape.min = w.boxes[0][0], w.shape.max = w.boxes[0][1];
         for (const auto& b : w.boxes)

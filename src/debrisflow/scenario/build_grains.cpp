@@ -311,6 +311,13 @@ void build_dem_walls(const io::CaseSpec& c, dem::WallSet& walls) {
             mesh.bounds(mlo, mhi);
             wall.origin = Real(0.5) * (mlo + mhi);
         }
+        // Input checks keep boxes resolvable (io/box_extent.hpp); an STL face thinner than
+        // round-off would still come without a normal.
+        for (const auto& p : prims)
+            if (!(std::isfinite(p.n.x) && std::isfinite(p.n.y) && std::isfinite(p.n.z)))
+                throw InputError(fmt::format("{}: wall '{}' has a face too small to have a "
+                                             "normal (degenerate geometry)",
+                                             w.origin.block(), w.name));
         walls.add(wall, prims);
     }
 }
