@@ -8,5 +8,5 @@ $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends \
     build-essential cmake libomp-dev \
     libtomlplusplus-dev libcli11-dev libfmt-dev libeigen3-dev \
-    libgtest-dev libbenchmark-dev \
+    libgtest-dev libbenchmark-dev zlib1g-dev \
     python3-numpy python3-matplotlib

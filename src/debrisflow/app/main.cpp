@@ -3,6 +3,7 @@
 #include "debrisflow/app/simulation.hpp"
 #include "debrisflow/app/step_estimate.hpp"
 #include "debrisflow/app/stop_request.hpp"
+#include "debrisflow/checkpoint/checkpoint_file.hpp"
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/core/memory_budget.hpp"
 #include "debrisflow/exec/parallel.hpp"
@@ -111,6 +112,23 @@ int check(const std::string& file, const std::vector<std::string>& sets) {
     return 0;
 }
 
+// The checkpoint file --restart names: a file, or the newest in OUT/checkpoint or in the
+// folder given.
+std::string newest_checkpoint(const std::string& where) {
+    namespace fs = std::filesystem;
+    if (fs::is_regular_file(where)) return where;
+    if (!fs::is_directory(where))
+        throw InputError("--restart " + where + ": no such checkpoint file or output folder");
+    for (const auto& dir : {fs::path(where) / "checkpoint", fs::path(where)}) {
+        const auto files = checkpoint::list(dir.string());
+        if (!files.empty()) return files.front();
+    }
+    throw InputError("--restart " + where +
+                     ": no checkpoint (checkpoint/step_*.dfc) in this folder; set "
+                     "output.checkpoint_every or checkpoint_wall, or stop a run with Ctrl-C, to "
+                     "write one");
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -118,7 +136,7 @@ int main(int argc, char** argv) {
                  "exit codes: 0 done, 2 bad input or usage, 3 the run went unstable (output "
                  "kept),\n130 stopped by a signal (output kept), 1 internal error"};
     cli.require_subcommand(0, 1);
-    std::string file, out, max_memory;
+    std::string file, out, max_memory, restart;
     std::vector<std::string> sets;
     int threads = 0;
     bool quiet = false, overwrite = false, version = false;
@@ -131,6 +149,9 @@ int main(int argc, char** argv) {
     run->add_option("--threads", threads, "OpenMP threads (default: all cores)")
         ->check(threads_range);
     run->add_flag("--quiet", quiet, "only errors on the terminal");
+    run->add_option("--restart", restart,
+                    "continue from the newest checkpoint of an output folder (OUT or "
+                    "OUT/checkpoint), or from one checkpoint file; the output continues there");
     run->add_flag("--overwrite", overwrite,
                   "replace the results of an earlier run in the output folder");
     run->add_option("--max-memory", max_memory,
@@ -162,10 +183,24 @@ int main(int argc, char** argv) {
         if (threads > 0) exec::set_threads(threads);
         if (chk->parsed()) return check(file, sets);
         const io::CaseSpec spec = io::read_case(file, sets);
+        std::string checkpoint_file;
+        if (!restart.empty()) {
+            checkpoint_file = newest_checkpoint(restart);
+            const auto folder =
+                std::filesystem::path(checkpoint_file).parent_path().parent_path().string();
+            if (!out.empty() && !std::filesystem::equivalent(out, folder))
+                throw InputError(fmt::format("--out {} differs from the folder of the "
+                                             "checkpoint ({}): a restart continues there",
+                                             out, folder));
+            out = folder;
+        }
         if (out.empty()) out = "out/" + spec.name;
         app::Simulation sim(spec);
         app::require_feasible_steps(sim);
-        io::prepare_output_dir(out, overwrite);
+        if (checkpoint_file.empty())
+            io::prepare_output_dir(out, overwrite);
+        else
+            sim.restore(checkpoint_file);
         app::install_stop_handlers();
         sim.run({out, quiet, threads});
         return 0;

@@ -72,6 +72,7 @@ Simulation::Simulation(io::CaseSpec spec)
                                          spec_.dem_origin.at("dt"), p.dt, stable.dt, stable.limiter,
                                          stable.dt));
     }
+    wall_removed_.assign(spec_.walls.size(), 0);
     for (const auto& p : spec_.probes) probes_.push_back(probes::make_probe(p, spec_));
     for (const auto& in : spec_.inlets) {
         inlets_.push_back(std::make_unique<flow::FluidInlet>(in, spec_));
@@ -180,10 +181,13 @@ io::RunReport Simulation::run(const RunOptions& opt) {
     if (rigid_ && !solver_ && !dem_) report.initial_dt = {spec_.rigid.dt, "rigid dt"};
     const bool files = !opt.out_dir.empty();
     log_.set_quiet(opt.quiet);
-    std::unique_ptr<io::VtkSeries> vtk, vtk_grains, vtk_bodies, vtk_fem;
+    auto& vtk = vtk_;
+    auto& vtk_grains = vtk_grains_;
+    auto& vtk_bodies = vtk_bodies_;
+    auto& vtk_fem = vtk_fem_;
     if (files) {
         std::filesystem::create_directories(opt.out_dir);
-        log_.open(opt.out_dir + "/log.txt");
+        log_.open(opt.out_dir + "/log.txt", resume_.active);
         std::ofstream(opt.out_dir + "/case.toml") << spec_.resolved_toml << "\n";
         for (auto& p : probes_) p->open(opt.out_dir + "/probes");
         if (spec_.vtk && solver_) vtk = std::make_unique<io::VtkSeries>(opt.out_dir + "/vtk");
@@ -193,6 +197,21 @@ io::RunReport Simulation::run(const RunOptions& opt) {
             vtk_bodies = std::make_unique<io::VtkSeries>(opt.out_dir + "/vtk", "bodies");
         if (spec_.vtk && fem_)
             vtk_fem = std::make_unique<io::VtkSeries>(opt.out_dir + "/vtk", "fem");
+        if (resume_.active) {
+            const std::array<io::VtkSeries*, 4> series{vtk.get(), vtk_grains.get(),
+                                                       vtk_bodies.get(), vtk_fem.get()};
+            for (std::size_t k = 0; k < series.size(); ++k)
+                if (series[k]) series[k]->resume(resume_.frames[k]);
+        }
+    }
+    if (resume_.active) {
+        log_.line(fmt::format("restarted from {} at t = {:.9g} s, step {}", resume_.file, t_,
+                              resume_.step));
+        if (resume_.threads != exec::max_threads())
+            log_.line(fmt::format("note: the checkpoint was written with {} threads, this run "
+                                  "has {}: results match the uninterrupted run only to "
+                                  "round-off (bit for bit at the same thread count)",
+                                  resume_.threads, exec::max_threads()));
     }
     if (fem_) {
         long elements = 0;
@@ -250,7 +269,7 @@ io::RunReport Simulation::run(const RunOptions& opt) {
                             s.mass, s.pos.x, s.pos.y, s.pos.z, 1 / s.inv_inertia.x,
                             1 / s.inv_inertia.y, 1 / s.inv_inertia.z));
         }
-    if (dem_ && spec_.dem.settle && !settled_ && t_ == 0) {
+    if (dem_ && spec_.dem.settle && !settled_ && t_ == 0 && !resume_.active) {
         try {
             settle_grains();
         } catch (const InstabilityError& e) {
@@ -280,16 +299,17 @@ io::RunReport Simulation::run(const RunOptions& opt) {
     integ.set_scheme(spec_.scheme == "verlet" || !solver_ ? time::Scheme::verlet
                                                           : time::Scheme::symplectic,
                      spec_.verlet_euler_every);
+    if (resume_.active) integ.resume(resume_.step, resume_.first_dt);
+    resume_.active = false;
     for (std::size_t w = 0; w < spec_.walls.size(); ++w) {
         if (!spec_.walls[w].remove_at) continue;
         const Real at = *spec_.walls[w].remove_at;
-        auto removed = std::make_shared<bool>(false);
-        integ.add_hook(time::Hook::step_begin, [this, w, at, removed](const time::StepInfo& s) {
-            if (*removed || s.t < at) return;
+        integ.add_hook(time::Hook::step_begin, [this, w, at](const time::StepInfo& s) {
+            if (wall_removed_[w] || s.t < at) return;
             if (solver_) solver_->remove_group(std::int16_t(w));
             if (dem_) dem_->remove_wall(int(w));
             if (!dem_ && rigid_) dem_walls_.walls()[w].active = false;
-            *removed = true;
+            wall_removed_[w] = 1;
             log_.line(fmt::format("t = {:.6g} s: wall '{}' removed", s.t, spec_.walls[w].name));
         });
     }
@@ -377,9 +397,29 @@ io::RunReport Simulation::run(const RunOptions& opt) {
                               dem_ ? fmt::format("  contacts {}", dem_->contacts()) : ""));
         for (auto& p : probes_) p->flush();
     });
-    // Ctrl-C or SIGTERM: stop after this step and keep the output (app/stop_request.hpp).
-    integ.add_hook(time::Hook::step_end, [](const time::StepInfo& s) {
-        if (const int sig = stop_signal())
+    // Checkpoints, after the observers have seen the step: every checkpoint_every simulated
+    // seconds, every checkpoint_wall minutes, at the end, and on a stop request. Ctrl-C or
+    // SIGTERM stops after this step and keeps the output (app/stop_request.hpp).
+    const std::string gap = checkpoint_gap();
+    const bool checkpoints = files && gap.empty();
+    auto every = time::Schedule::every_time(spec_.checkpoint_every);
+    every.skip_through(t_);
+    auto last_checkpoint = std::chrono::steady_clock::now();
+    integ.add_hook(time::Hook::after_output, [&, this](const time::StepInfo& s) {
+        const int sig = stop_signal();
+        const auto now = std::chrono::steady_clock::now();
+        const bool due = (spec_.checkpoint_every > 0 && every.due(s.step, s.t)) ||
+                         (spec_.checkpoint_wall > 0 &&
+                          std::chrono::duration<double>(now - last_checkpoint).count() >=
+                              60 * spec_.checkpoint_wall) ||
+                         (s.last && (spec_.checkpoint_every > 0 || spec_.checkpoint_wall > 0));
+        if (checkpoints && (due || sig)) {
+            write_checkpoint(opt.out_dir, s.step, s.t, integ.first_dt());
+            last_checkpoint = std::chrono::steady_clock::now();
+        } else if (files && sig && !gap.empty()) {
+            log_.line("no checkpoint written: " + gap);
+        }
+        if (sig)
             throw InterruptedError(fmt::format("stopped on request (signal {}) at t = {:.6g} s "
                                                "(step {})",
                                                sig, s.t, s.step));

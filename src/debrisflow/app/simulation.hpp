@@ -19,6 +19,10 @@
 #include "debrisflow/time/integrator.hpp"
 #include <memory>
 
+namespace debrisflow::checkpoint {
+class Archive;
+}
+
 namespace debrisflow::app {
 
 struct RunOptions {
@@ -57,6 +61,16 @@ public:
     // Memory held by particle data and neighbour lists, in bytes (estimate).
     std::size_t memory_bytes() const;
 
+    // Continues from a checkpoint file (app/simulation_checkpoint.cpp): the next run() starts
+    // at its time and step and continues its output folder. CheckpointError (exit 2) when the
+    // file is damaged, of another format, or written for another case (a key outside
+    // [output] and time.end differs).
+    void restore(const std::string& file);
+    // Writes OUT/checkpoint/step_<step>.dfc (atomic, the two newest kept); returns its path.
+    std::string write_checkpoint(const std::string& out_dir, long step, Real t, Real first_dt);
+    // What a checkpoint cannot hold yet in this case ("" when it can hold everything).
+    std::string checkpoint_gap() const;
+
 private:
     // Grains and bodies touch the solids' surface triangles (DEM-FEM contact).
     void couple_fem_to_contacts();
@@ -69,6 +83,8 @@ private:
     // World positions, velocities, radii and body index of the bodies' contact samples (or
     // vertices) for the VTK output.
     void write_bodies(io::VtkSeries& vtk, Real t) const;
+    // Saves or restores the whole state (app/simulation_checkpoint.cpp).
+    void state(checkpoint::Archive& ar);
 
     io::CaseSpec spec_;
     particles::ParticleSet set_;
@@ -91,6 +107,17 @@ private:
     std::vector<std::unique_ptr<probes::Probe>> probes_;
     Log log_;
     Real t_ = 0;
+    std::vector<std::uint8_t> wall_removed_; // per wall: a gate already lifted
+    std::unique_ptr<io::VtkSeries> vtk_, vtk_grains_, vtk_bodies_, vtk_fem_;
+    // A restored run: its step, first dt, thread count and the frames of its VTK series.
+    struct Resume {
+        bool active = false;
+        std::string file;
+        long step = 0;
+        Real first_dt = 0;
+        int threads = 0;
+        std::array<io::VtkSeries::Entries, 4> frames;
+    } resume_;
 };
 
 } // namespace debrisflow::app

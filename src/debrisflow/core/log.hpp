@@ -8,7 +8,10 @@ namespace debrisflow {
 class Log {
 public:
     Log() = default;
-    void open(const std::string& path) { file_.open(path); }
+    // append: continue an existing log (a restarted run).
+    void open(const std::string& path, bool append = false) {
+        file_.open(path, append ? std::ios::app : std::ios::out);
+    }
     void set_quiet(bool q) { quiet_ = q; }
     void line(const std::string& s);
 

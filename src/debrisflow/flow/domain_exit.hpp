@@ -7,6 +7,10 @@ namespace debrisflow::dem {
 class DemSolver;
 }
 
+namespace debrisflow::checkpoint {
+class Archive;
+}
+
 namespace debrisflow::flow {
 
 // The tally of one phase: count and mass [kg] (2D: kg/m) per face, in the order
@@ -36,6 +40,7 @@ public:
     bool removes() const { return spec_.policy == "remove"; }
     const ExitTally& fluid() const { return fluid_; }
     const ExitTally& grains() const { return grains_; }
+    void state(checkpoint::Archive& ar); // tallies and warnings given (flow/flow_state.cpp)
 
     // The face a finite point outside the domain crossed (index into face_names), or -1 when
     // it is inside (periodic directions and y in 2D never count).

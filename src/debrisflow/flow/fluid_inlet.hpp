@@ -4,6 +4,10 @@
 #include "debrisflow/models/eos_tait_k.hpp"
 #include "debrisflow/particles/particle_set.hpp"
 
+namespace debrisflow::checkpoint {
+class Archive;
+}
+
 namespace debrisflow::flow {
 
 // Velocity inlet with a buffer zone (after the DualSPHysics inlet of Tafuni et al. 2018, with
@@ -27,6 +31,7 @@ public:
     // initial buffer excluded [kg], [m^3] (2D: per metre).
     Real mass_in() const { return mass_in_; }
     Real volume_in() const { return volume_in_; }
+    void state(checkpoint::Archive& ar); // totals and the layer advance (flow/flow_state.cpp)
 
 private:
     void add_layer(particles::ParticleSet& set, Real along, Real t);

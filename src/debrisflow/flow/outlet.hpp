@@ -12,6 +12,10 @@ namespace debrisflow::rigid {
 class BodySolver;
 }
 
+namespace debrisflow::checkpoint {
+class Archive;
+}
+
 namespace debrisflow::flow {
 
 // A sink: fluid particles and grains found inside the box are removed and counted by phase
@@ -33,6 +37,7 @@ public:
     long grains_removed() const { return grains_removed_; }
     Real body_mass() const { return body_mass_; } // [kg] (2D: kg/m)
     long bodies_removed() const { return bodies_removed_; }
+    void state(checkpoint::Archive& ar); // totals removed (flow/flow_state.cpp)
 
 private:
     bool inside(Real x, Real y, Real z) const {

@@ -380,6 +380,12 @@ CaseSpec read_case_text(const std::string& text, const std::string& path,
     }
     for (const auto& o : overrides) apply_override(doc, o);
     c.resolved_toml = echo_toml(doc);
+    {
+        toml::table physics = doc;
+        physics.erase("output");
+        if (auto* time = physics["time"].as_table()) time->erase("end");
+        c.physics_toml = echo_toml(physics);
+    }
 
     ConfigTable root(doc, path, "");
     c.origin = root.origin();
@@ -408,6 +414,16 @@ CaseSpec read_case_text(const std::string& text, const std::string& path,
                                                   "(at most 1e5)",
                                                   c.t_end / c.vtk_every, c.t_end));
         c.progress_seconds = output->positive("progress_seconds", 2);
+        c.checkpoint_every = output->real("checkpoint_every", 0);
+        if (!(c.checkpoint_every >= 0)) output->fail("checkpoint_every", "must be >= 0 (s)");
+        if (c.checkpoint_every > 0 && c.t_end / c.checkpoint_every > 1e5)
+            output->fail("checkpoint_every",
+                         fmt::format("would write {:.3g} checkpoints over time.end = {} s (at "
+                                     "most 1e5)",
+                                     c.t_end / c.checkpoint_every, c.t_end));
+        c.checkpoint_wall = output->real("checkpoint_wall", 0);
+        if (!(c.checkpoint_wall >= 0)) output->fail("checkpoint_wall", "must be >= 0 (minutes)");
+        c.output_origin = output->origin();
         output->finish();
     }
 
@@ -505,6 +521,18 @@ CaseSpec read_case_text(const std::string& text, const std::string& path,
                 t.fail("name", "two probes are named \"" + c.probes.back().name + "\"");
     }
     root.finish();
+    if (c.checkpoint_every > 0 || c.checkpoint_wall > 0) {
+        const char* missing = c.has_dem        ? "grains (DEM)"
+                              : c.has_bodies() ? "rigid bodies"
+                              : c.has_fem()    ? "FEM solids"
+                                               : nullptr;
+        if (missing)
+            throw InputError(fmt::format(
+                "{}: checkpoints cover fluid (SPH) cases so far; this case has {}, whose state "
+                "is not saved yet: remove checkpoint_every and checkpoint_wall",
+                c.output_origin.at(c.checkpoint_every > 0 ? "checkpoint_every" : "checkpoint_wall"),
+                missing));
+    }
     return c;
 }
 

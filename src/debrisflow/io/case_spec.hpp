@@ -266,6 +266,9 @@ struct CaseSpec {
     Real vtk_every = 0; // 0: first and last frame only
     bool vtk = true;
     Real progress_seconds = 2;
+    // output.checkpoint_every [s simulated] and output.checkpoint_wall [min wall clock]: when
+    // to write OUT/checkpoint/ (0: never; a stop by SIGINT/SIGTERM writes one either way).
+    Real checkpoint_every = 0, checkpoint_wall = 0;
     sph::SphParams sph;
     bool fluid_gravity = true; // [sph] fluid_gravity: false = no hydrostatic field in the fluid
     sph::Domain domain;
@@ -283,6 +286,10 @@ struct CaseSpec {
     std::vector<InletSpec> inlets;
     std::vector<OutletSpec> outlets;
     std::string resolved_toml; // the case after --set overrides, for the output folder
+    // The case less [output] and time.end: what a checkpoint must match to be restarted
+    // (output settings may change, and a finished run may be extended).
+    std::string physics_toml;
+    Origin output_origin;
     // Where the top level and the [time], [domain], [sph] and [dem] tables are in the file.
     Origin origin, time_origin, domain_origin, sph_origin, dem_origin;
 };

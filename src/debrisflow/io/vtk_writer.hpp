@@ -30,6 +30,14 @@ public:
     // max_principal_strain, damage, eroded and solid index.
     void write(const fem::FemSolver& fem, Real t);
     int frames() const { return int(entries_.size()); }
+    // The frames written so far (time, file); resume() continues a series from a checkpoint
+    // with these frames (later files are overwritten as the run writes them again).
+    using Entries = std::vector<std::pair<Real, std::string>>;
+    const Entries& entries() const { return entries_; }
+    void resume(Entries e) {
+        entries_ = std::move(e);
+        write_pvd();
+    }
 
     struct Block {
         std::string name, type;

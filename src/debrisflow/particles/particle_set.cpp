@@ -1,4 +1,5 @@
 #include "debrisflow/particles/particle_set.hpp"
+#include "debrisflow/checkpoint/archive.hpp"
 
 namespace debrisflow::particles {
 
@@ -97,6 +98,19 @@ ParticleView ParticleSet::view() {
     return {x.data(),   y.data(),   z.data(),   vx.data(),   vy.data(),   vz.data(),    ax.data(),
             ay.data(),  az.data(),  rho.data(), drho.data(), p.data(),    mass.data(),  wnx.data(),
             wny.data(), wnz.data(), wd.data(),  mu.data(),   kind.data(), group.data(), size()};
+}
+
+void ParticleSet::state(checkpoint::Archive& ar) {
+    ar.section("particles");
+    ar(x, y, z, vx, vy, vz, ax, ay, az, rho, drho, p, mass, wnx, wny, wnz, wd, mu);
+    ar(vx_old, vy_old, vz_old, rho_old, sps_tau, kind, group, id, next_id_);
+    const std::size_t n = x.size();
+    for (const auto* a :
+         {&y, &z, &vx, &vy, &vz, &ax, &ay, &az, &rho, &drho, &p, &mass, &wnx, &wny, &wnz, &wd, &mu})
+        if (a->size() != n) ar.fail("particle arrays of different lengths");
+    if (kind.size() != n || group.size() != n || id.size() != n)
+        ar.fail("particle arrays of different lengths");
+    if (ar.is_loading()) ++layout_version_;
 }
 
 } // namespace debrisflow::particles

@@ -5,6 +5,10 @@
 #include <type_traits>
 #include <vector>
 
+namespace debrisflow::checkpoint {
+class Archive;
+}
+
 namespace debrisflow::particles {
 
 enum class Kind : std::uint8_t { fluid = 0, boundary = 1 };
@@ -57,6 +61,8 @@ public:
     void compact(const std::vector<std::uint8_t>& keep);
 
     ParticleView view();
+    // Saves or restores every array and the next id (checkpoint/archive.hpp).
+    void state(checkpoint::Archive& ar);
     // Changes whenever particles are added, reordered or removed (indices become stale).
     std::uint64_t layout_version() const { return layout_version_; }
 

@@ -62,6 +62,7 @@ public:
     MassFluxProbe(const io::ProbeSpec& s, const io::CaseSpec& c);
     std::vector<std::string> columns() const override { return {"flux [kg/s]", "cumulative [kg]"}; }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
+    void extra_state(checkpoint::Archive& ar) override;
 
 private:
     SolidCrossing crossing_;

@@ -13,6 +13,7 @@ public:
     void update(const ProbeContext& ctx);
     Real mass() const { return mass_; }
     Real volume() const { return volume_; }
+    void state(checkpoint::Archive& ar);
 
 private:
     void cross(std::uint64_t key, Vec3 x, Real m, Real v);
@@ -32,6 +33,7 @@ public:
     DischargeProbe(const io::ProbeSpec& s, const io::CaseSpec& c);
     std::vector<std::string> columns() const override;
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
+    void extra_state(checkpoint::Archive& ar) override;
 
 private:
     Vec3 point_, n_;
@@ -52,6 +54,7 @@ public:
         return {"M_up [kg]", "M_down [kg]", "E [-]"};
     }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
+    void extra_state(checkpoint::Archive& ar) override;
 
 private:
     SolidCrossing up_, down_;

@@ -59,6 +59,7 @@ public:
         if (bodies_) v.insert(v.end(), {outlet_.body_mass(), Real(outlet_.bodies_removed())});
         return v;
     }
+    void extra_state(checkpoint::Archive& ar) override;
 
 private:
     const flow::Outlet& outlet_;

@@ -1,4 +1,5 @@
 #include "debrisflow/probes/pressure_map.hpp"
+#include "debrisflow/checkpoint/archive.hpp"
 #include "debrisflow/dem/dem_solver.hpp"
 #include "debrisflow/rigid/body_solver.hpp"
 #include "debrisflow/sph/sph_solver.hpp"
@@ -124,6 +125,13 @@ std::vector<Real> PressureMapProbe::sample(Real, const ProbeContext& ctx) {
 void PressureMapProbe::open_extra(const std::string& dir) {
     // dir is OUT/probes: the frames go beside the particle frames in OUT/vtk.
     vtk_ = std::make_unique<io::VtkSeries>(dir + "/../vtk", name());
+    if (!resume_frames_.empty()) vtk_->resume(std::move(resume_frames_));
+}
+
+void PressureMapProbe::extra_state(checkpoint::Archive& ar) {
+    io::VtkSeries::Entries frames = vtk_ ? vtk_->entries() : io::VtkSeries::Entries{};
+    checkpoint::io_frames(ar, frames);
+    if (ar.is_loading()) resume_frames_ = std::move(frames);
 }
 
 void PressureMapProbe::after_sample(Real t, const std::vector<Real>& p) {

@@ -24,6 +24,7 @@ public:
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
     void open_extra(const std::string& dir) override;
     void after_sample(Real t, const std::vector<Real>& values) override;
+    void extra_state(checkpoint::Archive& ar) override;
     // Area of each panel in the last sample [m2] (2D: per metre), column order.
     const std::vector<Real>& areas() const { return area_; }
 
@@ -34,6 +35,7 @@ private:
     // The panel holding the face point (u, v), or -1 off the face.
     long panel_of(Real u, Real v) const;
     std::unique_ptr<io::VtkSeries> vtk_;
+    io::VtkSeries::Entries resume_frames_; // frames of a restored run, for open_extra
     int wall_, axis_, u_, v_, nu_, nv_;
     Vec3 normal_, lo_, hi_;
     Real face_, depth_; // the face's coordinate along axis; half the box's depth there

@@ -1,4 +1,5 @@
 #include "debrisflow/probes/probe.hpp"
+#include "debrisflow/checkpoint/archive.hpp"
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/probes/body_probe.hpp"
 #include "debrisflow/probes/dem_probes.hpp"
@@ -17,11 +18,24 @@ namespace debrisflow::probes {
 void Probe::open(const std::string& dir) {
     std::filesystem::create_directories(dir);
     const std::string path = dir + "/" + name_ + ".csv";
-    csv_.open(path);
-    if (!csv_) throw InputError("cannot write probe file " + path);
-    csv_ << "time [s]";
-    for (const auto& c : columns()) csv_ << "," << c;
-    csv_ << "\n";
+    if (resume_bytes_ >= 0) {
+        std::error_code ec;
+        const auto size = std::filesystem::file_size(path, ec);
+        if (ec || size < std::uintmax_t(resume_bytes_))
+            throw checkpoint::CheckpointError(fmt::format(
+                "{} holds {} bytes, fewer than the {} the checkpoint wrote: the output folder "
+                "does not belong to this checkpoint",
+                path, ec ? 0 : size, resume_bytes_));
+        std::filesystem::resize_file(path, std::uintmax_t(resume_bytes_));
+        csv_.open(path, std::ios::app);
+        if (!csv_) throw InputError("cannot write probe file " + path);
+    } else {
+        csv_.open(path);
+        if (!csv_) throw InputError("cannot write probe file " + path);
+        csv_ << "time [s]";
+        for (const auto& c : columns()) csv_ << "," << c;
+        csv_ << "\n";
+    }
     open_extra(dir);
 }
 
@@ -46,6 +60,18 @@ void Probe::record(Real t, const ProbeContext& ctx) {
         for (Real x : v) csv_ << fmt::format(",{:.9g}", x);
         csv_ << "\n";
     }
+}
+
+void Probe::state(checkpoint::Archive& ar) {
+    ar.section("probe " + name_);
+    std::int64_t bytes = -1;
+    if (!ar.is_loading() && csv_.is_open()) {
+        csv_.flush();
+        bytes = std::int64_t(csv_.tellp());
+    }
+    ar(history_, peak_, peak_t_, last_, samples_, bytes);
+    if (ar.is_loading()) resume_bytes_ = bytes;
+    extra_state(ar);
 }
 
 Real Probe::mean(std::size_t column, Real t0, Real t1) const {

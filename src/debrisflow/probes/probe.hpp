@@ -6,6 +6,9 @@
 #include <string>
 #include <vector>
 
+namespace debrisflow::checkpoint {
+class Archive;
+}
 namespace debrisflow::dem {
 class DemSolver;
 }
@@ -70,6 +73,12 @@ public:
     // joined linearly): what a sensor that averages over `window` would peak at. NaN when the
     // samples are too sparse for the window (every > window / 2) or the run is shorter.
     Real peak_window_mean(std::size_t column, Real window) const;
+    // Saves or restores the samples, peaks, the CSV's length and what the probe keeps between
+    // samples (extra_state). A restored probe's open() cuts its CSV back to that length and
+    // appends, so rows written after the checkpoint by the stopped run are replaced.
+    void state(checkpoint::Archive& ar);
+    // What a probe keeps between samples (previous values, accumulators, field frames).
+    virtual void extra_state(checkpoint::Archive& /*ar*/) {}
 
 protected:
     Probe(std::string name, Real every) : name_(std::move(name)), every_(every) {}
@@ -81,6 +90,7 @@ private:
     std::vector<Real> peak_, peak_t_, last_;
     long samples_ = 0;
     std::vector<std::vector<Real>> history_;
+    std::int64_t resume_bytes_ = -1; // CSV length to continue from (a restored probe)
 };
 
 std::unique_ptr<Probe> make_probe(const io::ProbeSpec& spec, const io::CaseSpec& c);

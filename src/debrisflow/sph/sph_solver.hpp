@@ -8,6 +8,10 @@
 #include "debrisflow/time/phase.hpp"
 #include <vector>
 
+namespace debrisflow::checkpoint {
+class Archive;
+}
+
 namespace debrisflow::sph {
 
 // The axis-aligned simulation box; particles leaving a non-periodic side stop the run.
@@ -57,6 +61,10 @@ public:
     template <class F> void with_gather(F&& f);
     // Initial time-step estimate from the parameters alone (before any motion).
     time::DtLimit initial_dt() const;
+    // Saves or restores the particles and the pair list's reference positions; a restored
+    // solver rebuilds its pair list at those positions, the list the saved run was using
+    // (sph/sph_checkpoint.cpp).
+    void state(checkpoint::Archive& ar);
 
 private:
     void update_pressure();

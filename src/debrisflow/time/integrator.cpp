@@ -24,7 +24,11 @@ void Integrator::notify_observers(const StepInfo& info, bool force) {
     ScopedTimer timer(t_output_);
     for (auto& o : observers_) {
         const bool due = o.when.due(info.step, info.t);
-        if (due || force) o.f(info);
+        // Forced (a run's first or last call): once per step, also after the due calls.
+        if (due || (force && o.fired_step != info.step)) {
+            o.fired_step = info.step;
+            o.f(info);
+        }
     }
 }
 
@@ -32,14 +36,25 @@ RunResult Integrator::run(Real t0, Real t_end) {
     const auto wall0 = std::chrono::steady_clock::now();
     StepInfo info;
     info.t = t0;
+    const bool resumed = resume_step_ >= 0;
+    if (resumed) info.step = resume_step_;
+    resume_step_ = -1;
+    // A resumed run keeps the saved derivatives: evaluating the forces again would differ
+    // where a model carries state between evaluations (Laminar+SPS's lagged stress).
     for (Phase* p : phases_) {
         p->update_neighbors(reorder_every_ > 0);
-        p->compute_forces();
+        if (!resumed) p->compute_forces();
     }
     DtLimit first = stable_dt();
     info.dt = first.dt;
     info.limiter = first.limiter;
-    notify_observers(info, true);
+    if (resumed) {
+        first.dt = resume_first_dt_;
+        for (auto& o : observers_) o.when.skip_through(t0), o.fired_step = info.step;
+    } else {
+        notify_observers(info, true);
+    }
+    first_dt_ = first.dt;
     const Real dt_floor = min_dt_fraction_ * first.dt;
     auto finish = [&]() {
         RunResult r;
@@ -92,6 +107,7 @@ RunResult Integrator::run(Real t0, Real t_end) {
             call_hooks(Hook::step_end, info);
             info.last = !(info.t < t_end - Real(1e-12) * (1 + t_end));
             notify_observers(info, info.last);
+            call_hooks(Hook::after_output, info);
         }
     } catch (const RunStopped&) {
         info.last = true;

@@ -9,7 +9,16 @@
 namespace debrisflow::time {
 
 // Where a hook runs inside a step.
-enum class Hook { step_begin, after_neighbors, after_forces, after_integration, step_end };
+// after_output runs once the observers have seen the step (a checkpoint there holds the
+// probes' rows of the step).
+enum class Hook {
+    step_begin,
+    after_neighbors,
+    after_forces,
+    after_integration,
+    step_end,
+    after_output
+};
 
 // What observers and hooks see of the current step.
 struct StepInfo {
@@ -55,6 +64,16 @@ public:
     // Runs from t0 to t_end. On instability the observers get a final call (last = true)
     // and the InstabilityError propagates.
     RunResult run(Real t0, Real t_end);
+    // The next run continues a saved run after `step` steps whose first step was `first_dt`
+    // (the dt-collapse watchdog's reference): no observer is called at t0 (the saved run
+    // called those that were due), time schedules resume after t0, and the phases' saved
+    // derivatives are used as they are (no force evaluation at t0).
+    void resume(long step, Real first_dt) {
+        resume_step_ = step;
+        resume_first_dt_ = first_dt;
+    }
+    // The first step's dt of the current (or resumed) run.
+    Real first_dt() const { return first_dt_; }
     DtLimit stable_dt() const;
     // Steps, time and timings of the last run, also after it stopped on an instability.
     const RunResult& result() const { return result_; }
@@ -69,6 +88,7 @@ private:
     struct ObserverEntry {
         Schedule when;
         Callback f;
+        long fired_step = -1; // the step it was last called at
     };
     std::vector<Phase*> phases_;
     std::vector<HookEntry> hooks_;
@@ -79,6 +99,8 @@ private:
     Scheme scheme_ = Scheme::symplectic;
     int euler_every_ = 40;
     double t_output_ = 0;
+    long resume_step_ = -1;
+    Real resume_first_dt_ = 0, first_dt_ = 0;
     RunResult result_;
 };
 

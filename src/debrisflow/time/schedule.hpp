@@ -29,6 +29,13 @@ public:
         return fire;
     }
 
+    // Advances the clock as if the schedule had been checked at every step up to time t (a
+    // resumed run): the same additions from 0 as the saved run made, so the same next time.
+    void skip_through(Real t) {
+        if (interval_ > 0)
+            while (!(t < next_ - Real(1e-12) * (1 + next_))) next_ += interval_;
+    }
+
 private:
     Real interval_ = 0, next_ = 0;
     long steps_ = 0;

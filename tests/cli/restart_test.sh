@@ -1,0 +1,104 @@
+#!/usr/bin/env bash
+# Checkpoint and restart (issue #31): a run to T and the same run restarted from its
+# checkpoint near T/2 write byte-identical probe files, VTK frames and final state (the final
+# checkpoint holds every array), at the same thread count. Also: a stop by SIGTERM writes a
+# checkpoint to continue from; a kill while a checkpoint is written leaves the previous one
+# usable; damaged, truncated and mismatched checkpoints are refused with exit 2.
+set -u
+exe="$1"; src="$2"; out="$3"
+rm -rf "$out"; mkdir -p "$out"
+fail() { echo "FAIL: $*"; exit 1; }
+newest() { ls "$1"/checkpoint/step_*.dfc | sort | tail -1; }
+
+# same_output A B what: every probe file, frame and the final checkpoint of B equal A's.
+same_output() {
+    [ "$(cd "$1" && ls probes vtk)" = "$(cd "$2" && ls probes vtk)" ] \
+        || fail "$3: the restarted run wrote other files: $(cd "$2" && ls probes vtk)"
+    for f in $(cd "$1" && ls probes/* vtk/*); do
+        cmp -s "$1/$f" "$2/$f" || fail "$3: $f differs from the uninterrupted run"
+    done
+    cmp -s "$(newest "$1")" "$(newest "$2")" || fail "$3: the final state differs"
+    [ "$(basename "$(newest "$1")")" = "$(basename "$(newest "$2")")" ] \
+        || fail "$3: the final step count differs"
+}
+
+inputs="$src/tests/cli/inputs"
+while read -r name file end; do
+    half=$(/usr/bin/python3 -c "print($end / 2)")
+    a="$out/$name.full"; b="$out/$name.restarted"
+    "$exe" run "$file" --out "$a" --threads 2 --quiet --set time.end=$end \
+        --set output.checkpoint_every=$half || fail "$name: the full run failed"
+    [ "$(ls "$a"/checkpoint/*.dfc | wc -l)" -eq 2 ] || fail "$name: expected 2 checkpoints"
+    cp -r "$a" "$b"
+    rm "$(newest "$b")" # keep the one near T/2
+    "$exe" run "$file" --restart "$b" --threads 2 --quiet --set time.end=$end \
+        --set output.checkpoint_every=$half || fail "$name: the restart failed"
+    grep -q "restarted from $b/checkpoint/step_" "$b/log.txt" || fail "$name: log lacks the restart"
+    same_output "$a" "$b" "$name"
+done <<CASES
+dambreak $src/cases/dambreak2d.toml 0.1
+gate_sps $inputs/restart_gate_sps2d.toml 0.3
+hb_inlet_outlet $inputs/restart_hb_inlet2d.toml 1.2
+CASES
+gate="$inputs/restart_gate_sps2d.toml"
+full="$out/gate_sps.full"
+
+# SIGTERM mid-run: exit 130, a checkpoint at the stop, and the restart continues as if never
+# stopped (the run without checkpoints is the same run: writing one changes nothing).
+s="$out/sigterm"
+"$exe" run "$gate" --out "$s" --threads 2 --quiet --set output.progress_seconds=0.05 &
+pid=$!
+for _ in $(seq 1 600); do
+    grep -q "step [1-9]" "$s/log.txt" 2>/dev/null && break
+    sleep 0.01
+done
+kill -TERM $pid; wait $pid; rc=$?
+[ $rc -eq 130 ] || fail "SIGTERM: exit $rc, expected 130"
+ls "$s"/checkpoint/step_*.dfc > /dev/null 2>&1 || fail "SIGTERM wrote no checkpoint"
+"$exe" run "$gate" --restart "$s" --threads 2 --quiet --set output.checkpoint_every=0.15 \
+    || fail "restart after SIGTERM failed"
+for f in $(cd "$full" && ls probes/* vtk/*); do
+    cmp -s "$full/$f" "$s/$f" || fail "after SIGTERM: $f differs from the uninterrupted run"
+done
+
+# SIGKILL while the second checkpoint is being written: the first stays usable.
+k="$out/killed"
+DEBRISFLOW_CHECKPOINT_KILL_AFTER_BYTES=4000 "$exe" run "$gate" --out "$k" --threads 2 --quiet \
+    --set output.checkpoint_every=0.1 > /dev/null 2>&1; rc=$?
+[ $rc -eq 137 ] || fail "fault injection: exit $rc, expected 137 (SIGKILL)"
+[ "$(ls "$k"/checkpoint/*.dfc | wc -l)" -eq 1 ] || fail "killed run: expected 1 complete checkpoint"
+ls "$k"/checkpoint/*.tmp > /dev/null 2>&1 || fail "killed run: no partial temporary file"
+"$exe" run "$gate" --restart "$k" --threads 2 --quiet --set output.checkpoint_every=0.15 \
+    || fail "restart after SIGKILL failed"
+for f in $(cd "$full" && ls probes/* vtk/*); do
+    cmp -s "$full/$f" "$k/$f" || fail "after SIGKILL: $f differs from the uninterrupted run"
+done
+ls "$k"/checkpoint/*.tmp > /dev/null 2>&1 && fail "the partial temporary file was left behind"
+
+# Refusals: exit 2 and a message naming the file and the problem.
+refused() { # what expected-message command...
+    local what="$1" msg="$2"; shift 2
+    "$@" > "$out/refused.txt" 2>&1; local rc=$?
+    [ $rc -eq 2 ] || fail "$what: exit $rc, expected 2: $(cat "$out/refused.txt")"
+    grep -q -- "$msg" "$out/refused.txt" || fail "$what: message: $(cat "$out/refused.txt")"
+}
+c="$out/corrupt"; cp -r "$full" "$c"
+f=$(newest "$c")
+printf '\x55' | dd of="$f" bs=1 seek=5000 conv=notrunc status=none
+refused corrupted "checkpoint $f: corrupted" "$exe" run "$gate" --restart "$c" --quiet
+t="$out/truncated"; cp -r "$full" "$t"
+f=$(newest "$t"); truncate -s -100 "$f"
+refused truncated "checkpoint $f: truncated" "$exe" run "$gate" --restart "$t" --quiet
+m="$out/mismatch"; cp -r "$full" "$m"
+refused "another case" "was written for another case" \
+    "$exe" run "$gate" --restart "$m" --quiet --set sph.c0=25
+refused "no checkpoint" "no checkpoint" "$exe" run "$gate" --restart "$out" --quiet
+refused "grains" "checkpoints cover fluid (SPH) cases so far" \
+    "$exe" check "$src/cases/deposits/column_collapse2d.toml" --set output.checkpoint_every=0.1
+
+# A finished run is extended by a larger time.end (output keys and time.end may change).
+e="$out/extended"; cp -r "$full" "$e"
+"$exe" run "$gate" --restart "$e" --quiet --set time.end=0.35 --set output.vtk_every=0.1 \
+    || fail "extending a finished run failed"
+tail -1 "$e/probes/p1.csv" | grep -q '^0.35,' || fail "extended run: p1 ends at $(tail -1 "$e/probes/p1.csv")"
+echo "restart: all checks passed"
