@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Checkpoint and restart (issue #31): a run to T and the same run restarted from its
+# Checkpoint and restart (issue #31): for fluid cases (a gate, Laminar+SPS, Herschel-Bulkley,
+# an inlet and an outlet) and grain cases (settled column behind a gate, clump-free contact
+# history; a hopper feed with its random sizes), a run to T and the same run restarted from its
 # checkpoint near T/2 write byte-identical probe files, VTK frames and final state (the final
 # checkpoint holds every array), at the same thread count. Also: a stop by SIGTERM writes a
 # checkpoint to continue from; a kill while a checkpoint is written leaves the previous one
@@ -39,6 +41,9 @@ done <<CASES
 dambreak $src/cases/dambreak2d.toml 0.1
 gate_sps $inputs/restart_gate_sps2d.toml 0.3
 hb_inlet_outlet $inputs/restart_hb_inlet2d.toml 1.2
+dem_column_settled_gate $src/cases/deposits/column_collapse2d.toml 0.2
+dem_hopper_feed_baffles $src/cases/debris/baffles_hopper_dem.toml 0.06
+dem_clumps $src/cases/deposits/column_collapse2d_clumps.toml 0.1
 CASES
 gate="$inputs/restart_gate_sps2d.toml"
 full="$out/gate_sps.full"
@@ -93,8 +98,8 @@ m="$out/mismatch"; cp -r "$full" "$m"
 refused "another case" "was written for another case" \
     "$exe" run "$gate" --restart "$m" --quiet --set sph.c0=25
 refused "no checkpoint" "no checkpoint" "$exe" run "$gate" --restart "$out" --quiet
-refused "grains" "checkpoints cover fluid (SPH) cases so far" \
-    "$exe" check "$src/cases/deposits/column_collapse2d.toml" --set output.checkpoint_every=0.1
+refused "bodies" "checkpoints cover fluid (SPH) and grain (DEM) cases so far" \
+    "$exe" check "$src/cases/rigid/floating_box2d.toml" --set output.checkpoint_every=0.1
 
 # A finished run is extended by a larger time.end (output keys and time.end may change).
 e="$out/extended"; cp -r "$full" "$e"

@@ -31,8 +31,8 @@ std::string first_difference(const std::string& a, const std::string& b) {
 } // namespace
 
 std::string Simulation::checkpoint_gap() const {
-    if (dem_) return "checkpoints do not hold grains (DEM) yet";
     if (rigid_) return "checkpoints do not hold rigid bodies yet";
+    if (sph_dem_) return "checkpoints do not hold the fluid-grain coupling ([dem] fluid_drag) yet";
     if (fem_) return "checkpoints do not hold FEM solids yet";
     return {};
 }
@@ -53,6 +53,8 @@ void Simulation::state(checkpoint::Archive& ar) {
     settled_ = settled != 0;
     if (wall_removed_.size() != spec_.walls.size()) ar.fail("its wall count differs");
     if (solver_) solver_->state(ar);
+    if (dem_) dem_->state(ar);
+    for (auto& f : feeds_) f->state(ar);
     for (auto& in : inlets_) in->state(ar);
     for (auto& out : outlets_) out->state(ar);
     domain_exit_.state(ar);

@@ -1,5 +1,6 @@
 #pragma once
 #include "debrisflow/core/error.hpp"
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <string>
@@ -59,9 +60,12 @@ public:
         for (auto& e : v) io(e);
     }
     template <class K, class V> void io(std::unordered_map<K, V>& m) {
+        // by key: a map's iteration order depends on its history, the file must not
         std::vector<K> keys;
+        for (const auto& kv : m) keys.push_back(kv.first);
+        std::sort(keys.begin(), keys.end());
         std::vector<V> values;
-        for (const auto& [k, v] : m) keys.push_back(k), values.push_back(v);
+        for (const K& k : keys) values.push_back(m.at(k));
         io(keys);
         io(values);
         if (saving_) return;

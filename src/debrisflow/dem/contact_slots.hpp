@@ -4,6 +4,10 @@
 #include <cstdint>
 #include <vector>
 
+namespace debrisflow::checkpoint {
+class Archive;
+}
+
 namespace debrisflow::dem {
 
 // Per-grain contact candidates with their history, in fixed-capacity slots per grain:
@@ -29,6 +33,8 @@ public:
     const Index* counts() const { return count_.data(); }
     ContactHistory* history() { return hist_.data(); }
     std::size_t slots() const;
+    // Saves or restores partners, keys and contact histories (dem/dem_checkpoint.cpp).
+    void state(checkpoint::Archive& ar);
 
 private:
     Index cap_ = 8;

@@ -170,6 +170,7 @@ void DemSolver::configure_grid() {
             lo[d] -= radius, hi[d] += radius;
         }
     }
+    grid_lo_ = lo, grid_hi_ = hi;
     grid_.configure(lo, hi, radius, params_.dim, domain_.periodic);
 }
 

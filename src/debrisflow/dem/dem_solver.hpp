@@ -85,6 +85,9 @@ public:
     void set_gravity(Vec3 g) { params_.gravity = g; }
     // Sets every grain's velocity and spin to zero (end of settling).
     void stop_grains();
+    // Saves or restores grains, contact histories, walls and the neighbour search's state
+    // (dem/dem_checkpoint.cpp).
+    void state(checkpoint::Archive& ar);
 
     // Contacts in the last force evaluation and the mean contact force magnitude [N].
     long contacts() const { return contacts_; }
@@ -143,6 +146,7 @@ private:
     std::vector<PairParams> table_;
     sph::Domain domain_;
     neighbors::CellGrid grid_;
+    Vec3 grid_lo_{}, grid_hi_{}; // the grid's box at the last rebuild
     ContactSlots grain_slots_, wall_slots_, obstacle_slots_;
     ObstacleSet* obstacles_ = nullptr;
     FluidLoad* fluid_ = nullptr;

@@ -6,6 +6,10 @@
 #include <type_traits>
 #include <vector>
 
+namespace debrisflow::checkpoint {
+class Archive;
+}
+
 namespace debrisflow::dem {
 
 // Trivially copyable view of a GrainSet: raw pointers only, usable in OpenMP and CUDA loops.
@@ -45,6 +49,8 @@ public:
     Real total_mass() const;
     // The id the next grain added will get (ids are 0, 1, 2 ... in order of addition).
     std::uint32_t next_id() const { return next_id_; }
+    // Saves or restores every array, the clumps and the next id (dem/dem_checkpoint.cpp).
+    void state(checkpoint::Archive& ar);
 
 private:
     std::uint32_t next_id_ = 0;

@@ -6,6 +6,10 @@
 #include <string>
 #include <vector>
 
+namespace debrisflow::checkpoint {
+class Archive;
+}
+
 namespace debrisflow::dem {
 
 // A named geometric wall: planes and/or triangles moving with a prescribed velocity, removable
@@ -76,6 +80,10 @@ public:
     bool inside(std::int32_t s, Vec3 p) const;
     int find(const std::string& name) const; // -1 if absent
     bool empty() const { return prims_.empty(); }
+
+    // Saves or restores the walls' motion, activity and loads and the faces' positions
+    // (dem/dem_checkpoint.cpp); nodal (FEM surface) walls are not held.
+    void state(checkpoint::Archive& ar);
 
 private:
     void index_solids();

@@ -4,6 +4,10 @@
 #include "debrisflow/scenario/size_sampler.hpp"
 #include <string>
 
+namespace debrisflow::checkpoint {
+class Archive;
+}
+
 namespace debrisflow::flow {
 
 // What every solid feed (grains or rigid rocks) shares: the target solid discharge Q_s(t), the
@@ -21,6 +25,9 @@ public:
     Real mass_in() const { return mass_in_; }         // [kg]
     Real owed() const { return owed_; }               // solid volume not yet placed [m^3]
     long pieces_in() const { return count_; }         // grains or rocks released
+    // Saves or restores the debt, the totals, the next size and the random generator
+    // (flow/flow_state.cpp).
+    void state(checkpoint::Archive& ar);
 
 protected:
     // Adds Q_s(t) dt to the debt.

@@ -1,0 +1,77 @@
+// The DEM phase's state for checkpoints: grains and clumps, contact histories, walls, and
+// what the neighbour search carries between rebuilds (the skin's drift, the grid's box).
+#include "debrisflow/checkpoint/archive.hpp"
+#include "debrisflow/dem/dem_solver.hpp"
+
+namespace debrisflow::dem {
+
+void GrainSet::state(checkpoint::Archive& ar) {
+    ar.section("grains");
+    ar(pos, vel, spin, force, torque, radius, mass, inv_mass, inv_inertia, material, id, next_id_);
+    const std::size_t n = pos.size();
+    for (const auto* v : {&vel, &spin, &force, &torque})
+        if (v->size() != n) ar.fail("grain arrays of different lengths");
+    for (const auto* v : {&radius, &mass, &inv_mass, &inv_inertia})
+        if (v->size() != n) ar.fail("grain arrays of different lengths");
+    if (material.size() != n || id.size() != n) ar.fail("grain arrays of different lengths");
+    ClumpSet& c = clumps;
+    ar(c.pos, c.vel, c.ang_mom, c.force, c.torque, c.orient, c.mass, c.inv_inertia, c.first,
+       c.member_id, c.offset);
+    if (c.first.size() != c.mass.size() + 1 || c.first.back() != c.member_id.size())
+        ar.fail("clump arrays that do not match");
+}
+
+void ContactSlots::state(checkpoint::Archive& ar) {
+    if (!ar.is_loading()) {
+        // Slots past a grain's count hold leftovers of earlier builds that nothing reads:
+        // saved as zeros, so equal states give equal files.
+        std::vector<Index> partner(partner_.size(), 0);
+        std::vector<std::uint32_t> key(key_.size(), 0);
+        std::vector<ContactHistory> hist(hist_.size(), ContactHistory{});
+        for (std::size_t i = 0; i < count_.size(); ++i)
+            for (std::size_t k = 0; k < std::size_t(std::min(count_[i], cap_)); ++k) {
+                const std::size_t s = i * std::size_t(cap_) + k;
+                partner[s] = partner_[s], key[s] = key_[s], hist[s] = hist_[s];
+            }
+        ar(cap_, count_, partner, key, hist);
+        return;
+    }
+    ar(cap_, count_, partner_, key_, hist_);
+    if (partner_.size() != count_.size() * std::size_t(cap_) || key_.size() != partner_.size() ||
+        hist_.size() != partner_.size())
+        ar.fail("contact slots that do not match");
+}
+
+void WallSet::state(checkpoint::Archive& ar) {
+    ar.section("walls");
+    for (auto& w : walls_) {
+        ar(w.origin, w.active, w.force, w.moment, w.impulse, w.impulse_time, w.contacts);
+    }
+    std::vector<WallPrimitive> prims = prims_;
+    ar(prims, layout_);
+    if (prims.size() != prims_.size()) ar.fail("its wall faces differ from this case's");
+    prims_ = std::move(prims);
+}
+
+void DemSolver::state(checkpoint::Archive& ar) {
+    grains_.state(ar);
+    walls_.state(ar);
+    ar.section("dem");
+    grain_slots_.state(ar);
+    wall_slots_.state(ar);
+    obstacle_slots_.state(ar);
+    ar(max_radius_, skin_, drift_, dt_, current_h_, auto_dt_.dt, auto_dt_.limiter);
+    ar(stability_dt_.dt, stability_dt_.limiter, built_, bad_, evaluated_, contacts_, builds_);
+    ar(sum_contact_force_, walls_seen_, grid_lo_, grid_hi_);
+    if (!ar.is_loading()) return;
+    map_clumps();
+    refresh_hot();
+    if (built_ && grains_.size() > 0) {
+        // the grid's box as at the last rebuild (its periodic lengths give the separations)
+        grid_.configure(grid_lo_, grid_hi_, 2 * max_radius_ + skin_, params_.dim, domain_.periodic);
+        const Real* p = &grains_.pos[0].x;
+        grid_.build(p, p + 1, p + 2, grains_.size(), 3);
+    }
+}
+
+} // namespace debrisflow::dem
