@@ -31,9 +31,8 @@ std::string first_difference(const std::string& a, const std::string& b) {
 } // namespace
 
 std::string Simulation::checkpoint_gap() const {
-    if (rigid_) return "checkpoints do not hold rigid bodies yet";
-    if (sph_dem_) return "checkpoints do not hold the fluid-grain coupling ([dem] fluid_drag) yet";
-    if (fem_) return "checkpoints do not hold FEM solids yet";
+    if (!rock_feeds_.empty())
+        return "checkpoints do not hold rock feeds (bodies added during the run) yet";
     return {};
 }
 
@@ -54,6 +53,16 @@ void Simulation::state(checkpoint::Archive& ar) {
     if (wall_removed_.size() != spec_.walls.size()) ar.fail("its wall count differs");
     if (solver_) solver_->state(ar);
     if (dem_) dem_->state(ar);
+    if (rigid_) rigid_->state(ar);
+    if (fem_) fem_->state(ar);
+    if (sph_fem_) sph_fem_->state(ar);
+    if (sph_dem_) sph_dem_->state(ar);
+    if (dem_fem_) dem_fem_->state(ar);
+    if (rigid_ && dem_) {
+        ar.section("obstacles");
+        ar(obstacles_.spheres, obstacles_.body_com, obstacles_.impulse, obstacles_.angular_impulse,
+           obstacles_.time, obstacles_.version);
+    }
     for (auto& f : feeds_) f->state(ar);
     for (auto& in : inlets_) in->state(ar);
     for (auto& out : outlets_) out->state(ar);

@@ -75,6 +75,19 @@ public:
     }
     template <class... T> void operator()(T&... v) { (io(v), ...); }
 
+    // A list of structs that have padding, member by member (the padding's bytes are garbage,
+    // and equal states must give equal files): columns(v, &S::a, &S::b, ...) must name every
+    // member that matters.
+    template <class S, class... M> void columns(std::vector<S>& v, M S::*... members) {
+        std::uint64_t n = v.size();
+        io(n);
+        if (!saving_) {
+            require(n <= bytes_.size() - pos_, "a table");
+            v.assign(std::size_t(n), S{});
+        }
+        (column(v, members), ...);
+    }
+
     // Writes the tag, or checks that the next bytes are this tag.
     void section(const std::string& tag);
     // Loading: every byte was read (the file holds nothing this build does not know).
@@ -83,6 +96,15 @@ public:
     [[noreturn]] void fail(const std::string& what) const;
 
 private:
+    template <class S, class M> void column(std::vector<S>& v, M S::*member) {
+        std::vector<M> c;
+        if (saving_)
+            for (const S& s : v) c.push_back(s.*member);
+        io(c);
+        if (saving_) return;
+        require(c.size() == v.size(), "a table's column");
+        for (std::size_t i = 0; i < v.size(); ++i) v[i].*member = c[i];
+    }
     Archive(bool saving, std::vector<char> bytes) : saving_(saving), bytes_(std::move(bytes)) {}
     void raw(void* p, std::size_t n);
     void require(bool ok, const char* what) const;

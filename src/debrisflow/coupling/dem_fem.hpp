@@ -4,6 +4,10 @@
 #include <string>
 #include <vector>
 
+namespace debrisflow::checkpoint {
+class Archive;
+}
+
 namespace debrisflow::coupling {
 
 // Two-way DEM <-> FEM contact: the boundary facets of every solid become the triangles of one
@@ -31,6 +35,9 @@ public:
     // Index of the DEM wall of solid s.
     int wall_of(std::size_t s) const { return walls_of_[s]; }
     std::size_t triangles() const;
+
+    // Saves or restores what the coupling keeps between steps (coupling/coupling_checkpoint.cpp).
+    void state(checkpoint::Archive& ar);
 
 private:
     std::vector<std::vector<dem::NodalCorners>> triangles_per_solid() const;

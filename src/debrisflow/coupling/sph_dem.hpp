@@ -8,6 +8,10 @@
 #include <string>
 #include <vector>
 
+namespace debrisflow::checkpoint {
+class Archive;
+}
+
 namespace debrisflow::coupling {
 
 // Unresolved SPH-DEM coupling for grains smaller than the kernel (smoothed fields as Robinson,
@@ -49,6 +53,10 @@ public:
 
     const dem::FluidLoad& load() const { return load_; }
     const std::string& drag_law() const { return drag_law_; }
+
+    // Saves or restores the grains' fluid loads and the reaction's weights
+    // (coupling/coupling_checkpoint.cpp).
+    void state(checkpoint::Archive& ar);
 
 private:
     void interpolate();

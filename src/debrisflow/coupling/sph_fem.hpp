@@ -5,6 +5,10 @@
 #include <unordered_map>
 #include <vector>
 
+namespace debrisflow::checkpoint {
+class Archive;
+}
+
 namespace debrisflow::coupling {
 
 // Two-way SPH <-> FEM coupling through boundary particles that move with the elements
@@ -37,6 +41,9 @@ public:
     // normal and depth follow the new surface. Returns the number of particles added.
     std::size_t expose_new_surface();
     std::size_t particles() const { return row_of_id_.size(); } // live boundary particles
+
+    // Saves or restores what the coupling keeps between steps (coupling/coupling_checkpoint.cpp).
+    void state(checkpoint::Archive& ar);
 
 private:
     struct Row {

@@ -47,10 +47,16 @@ void WallSet::state(checkpoint::Archive& ar) {
     for (auto& w : walls_) {
         ar(w.origin, w.active, w.force, w.moment, w.impulse, w.impulse_time, w.contacts);
     }
-    std::vector<WallPrimitive> prims = prims_;
-    ar(prims, layout_);
-    if (prims.size() != prims_.size()) ar.fail("its wall faces differ from this case's");
-    prims_ = std::move(prims);
+    // Faces (FEM surfaces change with erosion), their nodal corners and the moving nodes.
+    ar.columns(prims_, &WallPrimitive::a, &WallPrimitive::b, &WallPrimitive::c, &WallPrimitive::n,
+               &WallPrimitive::type, &WallPrimitive::wall, &WallPrimitive::corners,
+               &WallPrimitive::solid, &WallPrimitive::covered_by);
+    ar.columns(corners_, &NodalCorners::node, &NodalCorners::offset);
+    ar(nodes_.x, nodes_.v, nodes_.impulse, layout_);
+    for (const auto& p : prims_)
+        if (p.wall < 0 || std::size_t(p.wall) >= walls_.size() ||
+            (p.corners >= 0 && std::size_t(p.corners) >= corners_.size()))
+            ar.fail("wall faces that do not match this case's walls");
 }
 
 void DemSolver::state(checkpoint::Archive& ar) {
@@ -63,9 +69,17 @@ void DemSolver::state(checkpoint::Archive& ar) {
     ar(max_radius_, skin_, drift_, dt_, current_h_, auto_dt_.dt, auto_dt_.limiter);
     ar(stability_dt_.dt, stability_dt_.limiter, built_, bad_, evaluated_, contacts_, builds_);
     ar(sum_contact_force_, walls_seen_, grid_lo_, grid_hi_);
+    std::uint64_t timed = obstacle_spheres_timed_;
+    ar(obstacles_seen_, obstacle_builds_seen_, timed);
+    obstacle_spheres_timed_ = std::size_t(timed);
+    // The contact state of the grains as the last evaluation saw it (velocities before the
+    // closing half kick): a force evaluation before the next drift (a fluid step's
+    // mid-point) reads it, not the kicked velocities.
+    ar.columns(hot_, &GrainState::x, &GrainState::v, &GrainState::w, &GrainState::r,
+               &GrainState::m, &GrainState::material);
+    if (hot_.size() != grains_.pos.size()) ar.fail("a grain contact state of another length");
     if (!ar.is_loading()) return;
     map_clumps();
-    refresh_hot();
     if (built_ && grains_.size() > 0) {
         // the grid's box as at the last rebuild (its periodic lengths give the separations)
         grid_.configure(grid_lo_, grid_hi_, 2 * max_radius_ + skin_, params_.dim, domain_.periodic);

@@ -82,7 +82,7 @@ public:
     bool empty() const { return prims_.empty(); }
 
     // Saves or restores the walls' motion, activity and loads and the faces' positions
-    // (dem/dem_checkpoint.cpp); nodal (FEM surface) walls are not held.
+    // (dem/dem_checkpoint.cpp), FEM surfaces (nodal walls) included.
     void state(checkpoint::Archive& ar);
 
 private:

@@ -11,6 +11,10 @@
 #include <string>
 #include <vector>
 
+namespace debrisflow::checkpoint {
+class Archive;
+}
+
 namespace debrisflow::fem {
 
 // A nodal load: `force` [N] (2D: N/m) shared equally by the nodes, scaled by a
@@ -125,6 +129,9 @@ public:
     Eigen::MatrixXd assemble_stiffness() const;
     Eigen::VectorXd dof_masses() const;
     long eroded_elements() const;
+    // Saves or restores nodes, damage, erosion and the sub-cycle's state
+    // (fem/fem_checkpoint.cpp).
+    void state(checkpoint::Archive& ar);
 
 private:
     void internal_forces(bool update_damage);

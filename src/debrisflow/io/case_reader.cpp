@@ -522,16 +522,12 @@ CaseSpec read_case_text(const std::string& text, const std::string& path,
     }
     root.finish();
     if (c.checkpoint_every > 0 || c.checkpoint_wall > 0) {
-        const char* missing = c.has_bodies() ? "rigid bodies"
-                              : c.has_fem()  ? "FEM solids"
-                              : c.has_dem && c.dem.fluid_drag != "none" && !c.fluids.empty()
-                                  ? "grains coupled to the fluid ([dem] fluid_drag)"
-                                  : nullptr;
+        const char* missing =
+            !c.rigid.feeds.empty() ? "rock feeds (bodies added during the run)" : nullptr;
         if (missing)
             throw InputError(fmt::format(
-                "{}: checkpoints cover fluid (SPH) and grain (DEM) cases so far; this case has {}, "
-                "whose state "
-                "is not saved yet: remove checkpoint_every and checkpoint_wall",
+                "{}: checkpoints do not hold {} yet (everything else is held): remove "
+                "checkpoint_every and checkpoint_wall",
                 c.output_origin.at(c.checkpoint_every > 0 ? "checkpoint_every" : "checkpoint_wall"),
                 missing));
     }

@@ -8,6 +8,10 @@
 #include <unordered_map>
 #include <vector>
 
+namespace debrisflow::checkpoint {
+class Archive;
+}
+
 namespace debrisflow::rigid {
 
 // Contacts of rigid bodies with the DEM contact laws (dem::resolve_contact):
@@ -48,6 +52,9 @@ public:
     const std::vector<Vec3>& node_forces() const { return node_force_; }
     // Strongest single contact of each body in the last evaluation.
     const std::vector<StrongestContact>& strongest() const { return strongest_; }
+    // Saves or restores the contact memory and the last evaluation's loads
+    // (rigid/rigid_checkpoint.cpp).
+    void state(checkpoint::Archive& ar);
 
 private:
     struct Hit {

@@ -9,6 +9,10 @@
 #include <unordered_map>
 #include <vector>
 
+namespace debrisflow::checkpoint {
+class Archive;
+}
+
 namespace debrisflow::rigid {
 
 struct RigidParams {
@@ -115,6 +119,10 @@ public:
     Real time() const { return t_; }
     // Kinetic energy and world angular momentum of body b (about its centre of mass).
     Real kinetic_energy(int b) const;
+    // Saves or restores the bodies, their loads, joints' impulses, contact memory and the
+    // step's bookkeeping (rigid/rigid_checkpoint.cpp). Bodies added during the run (rock
+    // feeds) are not held.
+    void state(checkpoint::Archive& ar);
 
 private:
     void refresh_members();

@@ -3,6 +3,10 @@
 #include <string>
 #include <vector>
 
+namespace debrisflow::checkpoint {
+class Archive;
+}
+
 namespace debrisflow::rigid {
 
 // What touched a body hardest in a contact evaluation: the partner (a wall, by index, or
@@ -25,6 +29,8 @@ public:
     // `weight` [N] (walls named by wall_names, bodies by body_names).
     std::string describe(std::size_t b, Real weight, const std::vector<std::string>& wall_names,
                          const std::vector<std::string>& body_names) const;
+
+    void state(checkpoint::Archive& ar); // the two windows (rigid/rigid_checkpoint.cpp)
 
 private:
     struct Peak {

@@ -1,0 +1,32 @@
+// What the SPH-DEM, SPH-FEM and DEM-FEM couplings keep between steps, for checkpoints: the boundary
+// particles' rows in the elements (those exposed by erosion included), the surface facets and
+// how much erosion each coupling has seen.
+#include "debrisflow/checkpoint/archive.hpp"
+#include "debrisflow/coupling/dem_fem.hpp"
+#include "debrisflow/coupling/sph_dem.hpp"
+#include "debrisflow/coupling/sph_fem.hpp"
+
+namespace debrisflow::coupling {
+
+void SphFemCoupling::state(checkpoint::Archive& ar) {
+    ar.section("sph-fem");
+    for (auto* rows : {&rows_, &hidden_})
+        ar.columns(*rows, &Row::solid, &Row::element, &Row::n, &Row::facet, &Row::X);
+    ar(surface_stale_, facets_, row_of_id_, eroded_seen_, last_force_);
+    // The particles' indices follow from their ids at the next use.
+    if (ar.is_loading()) layout_seen_ = ~std::uint64_t(0);
+}
+
+void DemFemCoupling::state(checkpoint::Archive& ar) {
+    ar.section("dem-fem");
+    ar(eroded_seen_, last_grain_force_);
+}
+
+void SphDemCoupling::state(checkpoint::Archive& ar) {
+    ar.section("sph-dem");
+    dem::FluidLoad& l = load_;
+    ar(l.force, l.u, l.beta, l.impulse, l.felt, l.handover, l.time, l.max_rate);
+    ar(share_, reaction_, step_dt_);
+}
+
+} // namespace debrisflow::coupling
