@@ -2,7 +2,7 @@
 # Checkpoint and restart (issue #31). For fluid cases (a gate, Laminar+SPS, Herschel-Bulkley,
 # an inlet and an outlet), grain cases (a settled column behind a gate; a hopper feed with its
 # random sizes; clumps), rigid-body cases (a block sliding in water; a hinged disc and a box
-# on a spring falling into grains) and coupled cases (FEM alone, SPH-FEM, SPH-DEM drag, the
+# on a spring falling into grains; mesh rocks from a feed) and coupled cases (FEM alone, SPH-FEM, SPH-DEM drag, the
 # SPH-DEM-FEM retaining dam), a run to T and the same run restarted from its checkpoint near
 # T/2 write byte-identical probe files, VTK frames and final state (the final checkpoint holds
 # every array), at the same thread count. Also: a stop by SIGTERM writes a checkpoint to
@@ -48,6 +48,7 @@ dem_hopper_feed_baffles $src/cases/debris/baffles_hopper_dem.toml 0.06
 dem_clumps $src/cases/deposits/column_collapse2d_clumps.toml 0.1
 body_in_fluid $src/cases/rigid/sliding_block2d.toml 0.3
 bodies_grains_joints $inputs/restart_bodies_grains2d.toml 0.2
+rock_feed $inputs/restart_rock_feed3d.toml 0.6
 fem_cantilever $src/cases/fem/cantilever_steel.toml 0.02
 sph_fem_elastic_gate $src/cases/fem/elastic_gate2d.toml 0.06
 sph_dem_drag_settling $src/cases/coupling/settling_grain.toml 0.1
@@ -106,8 +107,6 @@ m="$out/mismatch"; cp -r "$full" "$m"
 refused "another case" "was written for another case" \
     "$exe" run "$gate" --restart "$m" --quiet --set sph.c0=25
 refused "no checkpoint" "no checkpoint" "$exe" run "$gate" --restart "$out" --quiet
-refused "rock feed" "checkpoints do not hold rock feeds (bodies added during the run) yet" \
-    "$exe" check "$src/cases/papers/slit_check_dam_reduced.toml" --set output.checkpoint_every=0.1
 
 # A finished run is extended by a larger time.end (output keys and time.end may change).
 e="$out/extended"; cp -r "$full" "$e"

@@ -400,8 +400,7 @@ io::RunReport Simulation::run(const RunOptions& opt) {
     // Checkpoints, after the observers have seen the step: every checkpoint_every simulated
     // seconds, every checkpoint_wall minutes, at the end, and on a stop request. Ctrl-C or
     // SIGTERM stops after this step and keeps the output (app/stop_request.hpp).
-    const std::string gap = checkpoint_gap();
-    const bool checkpoints = files && gap.empty();
+    const bool checkpoints = files;
     auto every = time::Schedule::every_time(spec_.checkpoint_every);
     every.skip_through(t_);
     auto last_checkpoint = std::chrono::steady_clock::now();
@@ -416,8 +415,6 @@ io::RunReport Simulation::run(const RunOptions& opt) {
         if (checkpoints && (due || sig)) {
             write_checkpoint(opt.out_dir, s.step, s.t, integ.first_dt());
             last_checkpoint = std::chrono::steady_clock::now();
-        } else if (files && sig && !gap.empty()) {
-            log_.line("no checkpoint written: " + gap);
         }
         if (sig)
             throw InterruptedError(fmt::format("stopped on request (signal {}) at t = {:.6g} s "

@@ -68,8 +68,6 @@ public:
     void restore(const std::string& file);
     // Writes OUT/checkpoint/step_<step>.dfc (atomic, the two newest kept); returns its path.
     std::string write_checkpoint(const std::string& out_dir, long step, Real t, Real first_dt);
-    // What a checkpoint cannot hold yet in this case ("" when it can hold everything).
-    std::string checkpoint_gap() const;
 
 private:
     // Grains and bodies touch the solids' surface triangles (DEM-FEM contact).

@@ -423,7 +423,6 @@ CaseSpec read_case_text(const std::string& text, const std::string& path,
                                      c.t_end / c.checkpoint_every, c.t_end));
         c.checkpoint_wall = output->real("checkpoint_wall", 0);
         if (!(c.checkpoint_wall >= 0)) output->fail("checkpoint_wall", "must be >= 0 (minutes)");
-        c.output_origin = output->origin();
         output->finish();
     }
 
@@ -521,16 +520,6 @@ CaseSpec read_case_text(const std::string& text, const std::string& path,
                 t.fail("name", "two probes are named \"" + c.probes.back().name + "\"");
     }
     root.finish();
-    if (c.checkpoint_every > 0 || c.checkpoint_wall > 0) {
-        const char* missing =
-            !c.rigid.feeds.empty() ? "rock feeds (bodies added during the run)" : nullptr;
-        if (missing)
-            throw InputError(fmt::format(
-                "{}: checkpoints do not hold {} yet (everything else is held): remove "
-                "checkpoint_every and checkpoint_wall",
-                c.output_origin.at(c.checkpoint_every > 0 ? "checkpoint_every" : "checkpoint_wall"),
-                missing));
-    }
     return c;
 }
 

@@ -289,7 +289,6 @@ struct CaseSpec {
     // The case less [output] and time.end: what a checkpoint must match to be restarted
     // (output settings may change, and a finished run may be extended).
     std::string physics_toml;
-    Origin output_origin;
     // Where the top level and the [time], [domain], [sph] and [dem] tables are in the file.
     Origin origin, time_origin, domain_origin, sph_origin, dem_origin;
 };

@@ -14,7 +14,7 @@ BodySolver::BodySolver(RigidParams params, std::vector<BodyState> bodies,
                        const dem::WallSet* walls)
     : params_(params), bodies_(std::move(bodies)), models_(std::move(models)),
       loads_(bodies_.size()), joints_(std::move(joints)), contacts_(std::move(contacts)),
-      walls_(walls) {
+      walls_(walls), initial_bodies_(bodies_.size()) {
     for (auto& b : bodies_) apply_locks(b);
 }
 

@@ -120,8 +120,8 @@ public:
     // Kinetic energy and world angular momentum of body b (about its centre of mass).
     Real kinetic_energy(int b) const;
     // Saves or restores the bodies, their loads, joints' impulses, contact memory and the
-    // step's bookkeeping (rigid/rigid_checkpoint.cpp). Bodies added during the run (rock
-    // feeds) are not held.
+    // step's bookkeeping (rigid/rigid_checkpoint.cpp), bodies added during the run (rock
+    // feeds) with their models and boundary particles included.
     void state(checkpoint::Archive& ar);
 
 private:
@@ -144,6 +144,7 @@ private:
     JointSet joints_;
     BodyContacts contacts_;
     const dem::WallSet* walls_;
+    std::size_t initial_bodies_ = 0; // bodies of the case; rock feeds add more
     particles::ParticleSet* set_ = nullptr;
     BodyParticles particles_;
     std::size_t initial_rows_ = 0;    // rows of the bodies built before the run

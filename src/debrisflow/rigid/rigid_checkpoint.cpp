@@ -42,15 +42,30 @@ void LoadRecorder::state(checkpoint::Archive& ar) {
     ar(start_, current_, previous_);
 }
 
+namespace {
+// A body's geometry and prescribed motion (bodies a rock feed added).
+void model_state(checkpoint::Archive& ar, BodyModel& m) {
+    ar(m.name, m.vertices, m.track_point, m.has_track_point, m.times, m.velocity);
+    ar(m.angular_velocity, m.bound_radius, m.volume);
+    for (auto* spheres : {&m.spheres, &m.samples})
+        ar.columns(*spheres, &BodySphere::center, &BodySphere::radius);
+}
+} // namespace
+
 void BodySolver::state(checkpoint::Archive& ar) {
     ar.section("bodies");
+    std::uint64_t count = bodies_.size();
+    ar(count);
+    if (count < initial_bodies_ || count > initial_bodies_ + (1u << 24))
+        ar.fail("its body count does not fit this case");
+    models_.resize(std::size_t(count));
+    for (std::size_t b = initial_bodies_; b < models_.size(); ++b) model_state(ar, models_[b]);
     std::vector<BodyState> bodies = bodies_;
     ar.columns(bodies, &BodyState::pos, &BodyState::q, &BodyState::vel, &BodyState::ang_mom,
                &BodyState::mass, &BodyState::inv_mass, &BodyState::inv_inertia, &BodyState::q_user,
                &BodyState::motion, &BodyState::lock_translation, &BodyState::lock_rotation,
                &BodyState::material, &BodyState::contact_radius, &BodyState::prescribed_omega);
-    if (bodies.size() != bodies_.size())
-        ar.fail("its body count differs from this case's (rock feeds are not held yet)");
+    if (bodies.size() != count) ar.fail("its body count does not match its models");
     bodies_ = std::move(bodies);
     ar(loads_, grain_force_, grain_torque_, t_, saved_t_, elapsed_, commit_next_);
     ar(pending_kick_, max_contact_rate_, last_dt_);
@@ -61,6 +76,13 @@ void BodySolver::state(checkpoint::Archive& ar) {
     for (std::size_t k = 0; k < impulse.size(); ++k) joints_.joints()[k].impulse = impulse[k];
     contacts_.state(ar);
     recorder_.state(ar);
+    // boundary particles of the bodies (rows of bodies added during the run included)
+    ar(particles_.owner, particles_.offset, particles_.normal, particles_.extra_rows);
+    if (particles_.offset.size() != particles_.owner.size() ||
+        particles_.normal.size() != particles_.owner.size())
+        ar.fail("body particle rows of mismatched lengths");
+    if (ar.is_loading() && (loads_.size() != count || (obstacles_ && grain_force_.size() != count)))
+        ar.fail("body loads that do not match its bodies");
     // The body particles' indices follow from their ids at the next evaluation.
     if (ar.is_loading()) layout_seen_ = ~std::uint64_t(0);
 }
