@@ -75,6 +75,13 @@ for f in $(cd "$full" && ls probes/* vtk/*); do
     cmp -s "$full/$f" "$s/$f" || fail "after SIGTERM: $f differs from the uninterrupted run"
 done
 
+# output.checkpoint_wall: checkpoints by wall-clock time (here every 0.06 s of a ~1 s run).
+w="$out/wall"
+"$exe" run "$gate" --out "$w" --threads 2 --quiet --set output.checkpoint_wall=0.001 \
+    || fail "run with checkpoint_wall failed"
+[ "$(grep -c ': checkpoint ' "$w/log.txt")" -ge 3 ] \
+    || fail "checkpoint_wall: $(grep -c ': checkpoint ' "$w/log.txt") checkpoints written"
+
 # SIGKILL while the second checkpoint is being written: the first stays usable.
 k="$out/killed"
 DEBRISFLOW_CHECKPOINT_KILL_AFTER_BYTES=4000 "$exe" run "$gate" --out "$k" --threads 2 --quiet \

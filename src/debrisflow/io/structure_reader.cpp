@@ -240,7 +240,7 @@ void read_structures(const ConfigTable& root, CaseSpec& c) {
                                        max_structure_boxes));
         for (const auto& b : w.boxes)
             if (const auto why = unresolvable_box(b[0], b[1], c.dim); !why.empty())
-                t.fail("type", fmt::format("the {} makes a box {}", w.structure, why));
+                t.fail("type", fmt::format("the {} has a box that {}", w.structure, why));
         // Bounding box (the wall's origin for moments; shape extents).
         w.shape.min = w.boxes[0][0], w.shape.max = w.boxes[0][1];
         for (const auto& b : w.boxes)
