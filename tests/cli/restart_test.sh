@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Checkpoint and restart (issue #31). For fluid cases (a gate, Laminar+SPS, Herschel-Bulkley,
 # an inlet and an outlet), grain cases (a settled column behind a gate; a hopper feed with its
-# random sizes; clumps), rigid-body cases (a block sliding in water; a hinged disc and a box
-# on a spring falling into grains; mesh rocks from a feed) and coupled cases (FEM alone, SPH-FEM, SPH-DEM drag, the
+# random sizes; clumps; the granular flume), rigid-body cases (a block sliding in water; the
+# reduced container case; a hinged disc and a box on a spring falling into grains; mesh rocks
+# from a feed) and coupled cases (FEM alone, SPH-FEM, SPH-DEM drag, the
 # SPH-DEM-FEM retaining dam), a run to T and the same run restarted from its checkpoint near
 # T/2 write byte-identical probe files, VTK frames and final state (the final checkpoint holds
 # every array), at the same thread count. Also: a stop by SIGTERM writes a checkpoint to
@@ -46,7 +47,9 @@ hb_inlet_outlet $inputs/restart_hb_inlet2d.toml 1.2
 dem_column_settled_gate $src/cases/deposits/column_collapse2d.toml 0.2
 dem_hopper_feed_baffles $src/cases/debris/baffles_hopper_dem.toml 0.06
 dem_clumps $src/cases/deposits/column_collapse2d_clumps.toml 0.1
+dem_flume $src/cases/flume/flume30_reduced.toml 0.01
 body_in_fluid $src/cases/rigid/sliding_block2d.toml 0.3
+container_reduced $src/cases/papers/container_dambreak2d_reduced.toml 0.02
 bodies_grains_joints $inputs/restart_bodies_grains2d.toml 0.2
 rock_feed $inputs/restart_rock_feed3d.toml 0.6
 fem_cantilever $src/cases/fem/cantilever_steel.toml 0.02
