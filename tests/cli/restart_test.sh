@@ -99,6 +99,20 @@ for f in $(cd "$full" && ls probes/* vtk/*); do
 done
 ls "$k"/checkpoint/*.tmp > /dev/null 2>&1 && fail "the partial temporary file was left behind"
 
+# A restart of a restart: the restarted run checkpoints at its first step (before a probe is
+# due) and is killed at its second checkpoint; continuing from that first checkpoint still
+# gives the uninterrupted run's files (the probe files' lengths are right before any new row).
+r="$out/twice"; cp -r "$full" "$r"
+rm "$(newest "$r")"
+DEBRISFLOW_CHECKPOINT_KILL_AFTER_BYTES=100 "$exe" run "$gate" --restart "$r" --threads 2 \
+    --quiet --set output.checkpoint_every=1e-5 > /dev/null 2>&1; rc=$?
+[ $rc -eq 137 ] || fail "restart of a restart: exit $rc, expected 137 (SIGKILL)"
+"$exe" run "$gate" --restart "$r" --threads 2 --quiet --set output.checkpoint_every=0.15 \
+    || fail "restart of a restart failed"
+for f in $(cd "$full" && ls probes/* vtk/*); do
+    cmp -s "$full/$f" "$r/$f" || fail "restart of a restart: $f differs from the uninterrupted run"
+done
+
 # Refusals: exit 2 and a message naming the file and the problem.
 refused() { # what expected-message command...
     local what="$1" msg="$2"; shift 2

@@ -27,7 +27,10 @@ void Probe::open(const std::string& dir) {
                 "does not belong to this checkpoint",
                 path, ec ? 0 : size, resume_bytes_));
         std::filesystem::resize_file(path, std::uintmax_t(resume_bytes_));
-        csv_.open(path, std::ios::app);
+        // in | out keeps the content; at its end, tellp() gives the length a later checkpoint
+        // records even before this run writes a row
+        csv_.open(path, std::ios::in | std::ios::out);
+        csv_.seekp(0, std::ios::end);
         if (!csv_) throw InputError("cannot write probe file " + path);
     } else {
         csv_.open(path);
