@@ -15,13 +15,18 @@ rm -rf "$out"; mkdir -p "$out"
 fail() { echo "FAIL: $*"; exit 1; }
 newest() { ls "$1"/checkpoint/step_*.dfc | sort | tail -1; }
 
-# same_output A B what: every probe file, frame and the final checkpoint of B equal A's.
-same_output() {
-    [ "$(cd "$1" && ls probes vtk)" = "$(cd "$2" && ls probes vtk)" ] \
-        || fail "$3: the restarted run wrote other files: $(cd "$2" && ls probes vtk)"
+# same_files A B what: every probe file and frame of A is in B, byte for byte.
+same_files() {
     for f in $(cd "$1" && ls probes/* vtk/*); do
         cmp -s "$1/$f" "$2/$f" || fail "$3: $f differs from the uninterrupted run"
     done
+}
+
+# same_output A B what: as same_files, no other files, and the same final checkpoint.
+same_output() {
+    [ "$(cd "$1" && ls probes vtk)" = "$(cd "$2" && ls probes vtk)" ] \
+        || fail "$3: the restarted run wrote other files: $(cd "$2" && ls probes vtk)"
+    same_files "$1" "$2" "$3"
     cmp -s "$(newest "$1")" "$(newest "$2")" || fail "$3: the final state differs"
     [ "$(basename "$(newest "$1")")" = "$(basename "$(newest "$2")")" ] \
         || fail "$3: the final step count differs"
@@ -74,9 +79,7 @@ kill -TERM $pid; wait $pid; rc=$?
 ls "$s"/checkpoint/step_*.dfc > /dev/null 2>&1 || fail "SIGTERM wrote no checkpoint"
 "$exe" run "$gate" --restart "$s" --threads 2 --quiet --set output.checkpoint_every=0.15 \
     || fail "restart after SIGTERM failed"
-for f in $(cd "$full" && ls probes/* vtk/*); do
-    cmp -s "$full/$f" "$s/$f" || fail "after SIGTERM: $f differs from the uninterrupted run"
-done
+same_files "$full" "$s" "after SIGTERM"
 
 # output.checkpoint_wall: checkpoints by wall-clock time (here every 0.06 s of a ~1 s run).
 w="$out/wall"
@@ -94,9 +97,7 @@ DEBRISFLOW_CHECKPOINT_KILL_AFTER_BYTES=4000 "$exe" run "$gate" --out "$k" --thre
 ls "$k"/checkpoint/*.tmp > /dev/null 2>&1 || fail "killed run: no partial temporary file"
 "$exe" run "$gate" --restart "$k" --threads 2 --quiet --set output.checkpoint_every=0.15 \
     || fail "restart after SIGKILL failed"
-for f in $(cd "$full" && ls probes/* vtk/*); do
-    cmp -s "$full/$f" "$k/$f" || fail "after SIGKILL: $f differs from the uninterrupted run"
-done
+same_files "$full" "$k" "after SIGKILL"
 ls "$k"/checkpoint/*.tmp > /dev/null 2>&1 && fail "the partial temporary file was left behind"
 
 # A restart of a restart: the restarted run checkpoints at its first step (before a probe is
@@ -109,9 +110,7 @@ DEBRISFLOW_CHECKPOINT_KILL_AFTER_BYTES=100 "$exe" run "$gate" --restart "$r" --t
 [ $rc -eq 137 ] || fail "restart of a restart: exit $rc, expected 137 (SIGKILL)"
 "$exe" run "$gate" --restart "$r" --threads 2 --quiet --set output.checkpoint_every=0.15 \
     || fail "restart of a restart failed"
-for f in $(cd "$full" && ls probes/* vtk/*); do
-    cmp -s "$full/$f" "$r/$f" || fail "restart of a restart: $f differs from the uninterrupted run"
-done
+same_files "$full" "$r" "restart of a restart"
 
 # Refusals: exit 2 and a message naming the file and the problem.
 refused() { # what expected-message command...

@@ -75,8 +75,8 @@ void DemSolver::state(checkpoint::Archive& ar) {
     // The contact state of the grains as the last evaluation saw it (velocities before the
     // closing half kick): a force evaluation before the next drift (a fluid step's
     // mid-point) reads it, not the kicked velocities.
-    ar.columns(hot_, &GrainState::x, &GrainState::v, &GrainState::w, &GrainState::r,
-               &GrainState::m, &GrainState::material);
+    ar.columns(hot_, &GrainState::x, &GrainState::v, &GrainState::w, &GrainState::r, &GrainState::m,
+               &GrainState::material);
     if (hot_.size() != grains_.pos.size()) ar.fail("a grain contact state of another length");
     if (!ar.is_loading()) return;
     map_clumps();
