@@ -400,7 +400,6 @@ io::RunReport Simulation::run(const RunOptions& opt) {
     // Checkpoints, after the observers have seen the step: every checkpoint_every simulated
     // seconds, every checkpoint_wall minutes, at the end, and on a stop request. Ctrl-C or
     // SIGTERM stops after this step and keeps the output (app/stop_request.hpp).
-    const bool checkpoints = files;
     auto every = time::Schedule::every_time(spec_.checkpoint_every);
     every.skip_through(t_);
     auto last_checkpoint = std::chrono::steady_clock::now();
@@ -412,7 +411,7 @@ io::RunReport Simulation::run(const RunOptions& opt) {
                           std::chrono::duration<double>(now - last_checkpoint).count() >=
                               60 * spec_.checkpoint_wall) ||
                          (s.last && (spec_.checkpoint_every > 0 || spec_.checkpoint_wall > 0));
-        if (checkpoints && (due || sig)) {
+        if (files && (due || sig)) {
             write_checkpoint(opt.out_dir, s.step, s.t, integ.first_dt());
             last_checkpoint = std::chrono::steady_clock::now();
         }

@@ -5,7 +5,6 @@
 #include "debrisflow/checkpoint/checkpoint_file.hpp"
 #include "debrisflow/core/stopwatch.hpp"
 #include "debrisflow/exec/parallel.hpp"
-#include <chrono>
 #include <filesystem>
 #include <fmt/format.h>
 #include <sstream>
@@ -77,19 +76,20 @@ void Simulation::state(checkpoint::Archive& ar) {
 
 std::string Simulation::write_checkpoint(const std::string& out_dir, long step, Real t,
                                          Real first_dt) {
-    const auto wall0 = std::chrono::steady_clock::now();
+    double wall = 0;
     const std::string dir = out_dir + "/checkpoint";
-    std::filesystem::create_directories(dir);
-    auto ar = checkpoint::Archive::saving();
-    t_ = t;
-    resume_.step = step;
-    resume_.first_dt = first_dt;
-    state(ar);
     const std::string path = dir + "/" + checkpoint::file_name(step);
-    checkpoint::write_file(path, ar.bytes());
-    checkpoint::prune(dir, 2);
-    const double wall =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    auto ar = checkpoint::Archive::saving();
+    {
+        ScopedTimer timer(wall);
+        std::filesystem::create_directories(dir);
+        t_ = t;
+        resume_.step = step;
+        resume_.first_dt = first_dt;
+        state(ar);
+        checkpoint::write_file(path, ar.bytes());
+        checkpoint::prune(dir, 2);
+    }
     log_.line(fmt::format("t = {:.6g} s: checkpoint {} ({:.3g} MB, {:.2f} s)", t_, path,
                           double(ar.bytes().size()) / 1e6, wall));
     return path;
