@@ -1,29 +1,52 @@
 #!/usr/bin/env bash
 # DEM throughput: debrisflow at 1 and 2 threads and LIGGGHTS 3.8 (Debian package liggghts) on
-# one core, same physics (cases/bench/<case>.toml = bench/liggghts/<case>.in).
-# Usage: bench/run_dem_bench.sh [build dir] [steps]   (defaults: build, 5000)
+# one core, same physics (cases/bench/<case>.toml = bench/liggghts/<case>.in), run in turn
+# (debrisflow 1 thread, 2 threads, LIGGGHTS) REPEATS times in one sitting; prints every run and
+# the medians with the ratios. Both codes' figures are of the time loop only (debrisflow's
+# summary.json particle_steps_per_second, LIGGGHTS's "Loop time").
+# Usage: bench/run_dem_bench.sh [build dir] [steps] [repeats]   (defaults: build, 5000, 1)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="${1:-$root/build}"
 steps="${2:-5000}"
+repeats="${3:-1}"
 end=$(python3 -c "print($steps * 2e-7)")
 out=$(mktemp -d)
-for case in box100k flume30; do
-  for t in 1 2; do
-    "$build/debrisflow" run "$root/cases/bench/$case.toml" --out "$out/$case-$t" --threads "$t" \
-      --set time.end="$end" --quiet
-    python3 -c "import json,sys; s=json.load(open('$out/$case-$t/summary.json')); \
-print(f\"debrisflow $case threads=$t: {s['particle_steps_per_second']:.3g} particle-steps/s, \
-{s['dem']['contacts']} contacts, {s['wall_seconds']:.1f} s\")"
-  done
-done
-if command -v liggghts > /dev/null; then
+results="$out/results.txt"
+: > "$results"
+have_liggghts=0
+command -v liggghts > /dev/null && have_liggghts=1
+for r in $(seq "$repeats"); do
   for case in box100k:100000 flume30:15000; do
     name=${case%%:*}
     n=${case##*:}
-    (cd "$out" && sed "s/^run 5000/run $steps/" "$root/bench/liggghts/$name.in" > "$name.in" &&
-       liggghts -in "$name.in" -echo none -log "lig-$name.log" | grep "Loop time" |
-       awk -v s="$steps" -v n="$n" -v c="$name" \
-         '{printf "liggghts %s 1 core: %.3g particle-steps/s (%s s)\n", c, n*s/$4, $4}')
+    for t in 1 2; do
+      "$build/debrisflow" run "$root/cases/bench/$name.toml" --out "$out/$name-$t" --threads "$t" \
+        --set time.end="$end" --quiet --overwrite
+      python3 -c "import json; s=json.load(open('$out/$name-$t/summary.json')); \
+print('$name debrisflow-$t', s['particle_steps_per_second'], s['dem']['contacts'])" | tee -a "$results"
+    done
+    if [ "$have_liggghts" = 1 ]; then
+      (cd "$out" && sed "s/^run 5000/run $steps/" "$root/bench/liggghts/$name.in" > "$name.in" &&
+         liggghts -in "$name.in" -echo none -log "lig-$name.log" | grep "Loop time" |
+         awk -v s="$steps" -v n="$n" -v c="$name" '{print c, "liggghts-1", n*s/$4, "-"}') |
+        tee -a "$results"
+    fi
   done
-fi
+done
+python3 - "$results" <<'EOF'
+import statistics, sys
+runs = {}
+for line in open(sys.argv[1]):
+    case, code, pss, _ = line.split()
+    runs.setdefault((case, code), []).append(float(pss))
+print("medians (particle-steps/s):")
+for case in ("box100k", "flume30"):
+    med = {code: statistics.median(v) for (c, code), v in runs.items() if c == case}
+    line = f"  {case}: " + ", ".join(f"{code} {v:.3g} ({len(runs[(case, code)])} runs)"
+                                     for code, v in sorted(med.items()))
+    if "liggghts-1" in med:
+        line += f"; per core vs LIGGGHTS {med['debrisflow-1'] / med['liggghts-1']:.2f}x"
+    line += f"; 2 threads / 1 thread {med['debrisflow-2'] / med['debrisflow-1']:.2f}x"
+    print(line)
+EOF

@@ -103,6 +103,7 @@ region = { shape = "box", min = [0, 0, 0], max = [0.1, 0.1, 0.1] }
 settle = true
 )"));
     app::Simulation sim(spec);
+    sim.grains().measure_contact_force(true); // for the ratio after the run
     app::RunOptions opt;
     opt.out_dir = dir;
     opt.quiet = true;

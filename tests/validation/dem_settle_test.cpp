@@ -77,6 +77,7 @@ TEST(DemSettle, DiscsAndSpheresWithStiffTangentialSpringsReachTheEquilibriumRati
     for (const auto& [dim, count, dimers] :
          {Packing{2, 500, false}, Packing{3, 500, false}, Packing{2, 250, true}}) {
         app::Simulation sim(test::case_from_toml("settle", packing_case(dim, count, dimers)));
+        sim.grains().measure_contact_force(true); // for the ratio after the run
         app::RunOptions opt;
         opt.quiet = true;
         ASSERT_NO_THROW(sim.run(opt)) << dim << "D";

@@ -139,6 +139,8 @@ std::size_t Simulation::memory_bytes() const {
 
 void Simulation::settle_grains() {
     dem::DemSolver& d = *dem_;
+    const bool measuring = d.measuring_contact_force();
+    d.measure_contact_force(true);
     d.update_neighbors(true);
     d.compute_forces();
     const Real dt = d.dt();
@@ -156,6 +158,7 @@ void Simulation::settle_grains() {
         d.check_health(Real(steps) * dt);
         ratio = d.unbalanced_ratio();
     }
+    d.measure_contact_force(measuring);
     d.stop_grains();
     for (auto& w : dem_walls_.walls()) w.impulse = {}, w.impulse_time = 0;
     log_.line(fmt::format("grains settled: {} steps ({:.4g} s), mean unbalanced / mean contact "

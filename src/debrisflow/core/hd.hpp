@@ -7,3 +7,12 @@
 #define DF_HD
 #define DF_INLINE inline
 #endif
+// DF_HOT_INLINE: a small function on a particle-pair hot path that the host compiler must
+// inline (GCC's size heuristics otherwise leave the DEM contact law as a call per contact).
+#if defined(__CUDACC__)
+#define DF_HOT_INLINE __forceinline__
+#elif defined(__GNUC__)
+#define DF_HOT_INLINE inline __attribute__((always_inline))
+#else
+#define DF_HOT_INLINE inline
+#endif

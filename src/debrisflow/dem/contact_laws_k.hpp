@@ -15,9 +15,9 @@ struct NormalResponse {
 };
 
 // Inputs shared by the laws: overlap delta > 0, approach rate ddelta = -v_rel . n,
-// effective radius R* = r_i r_j/(r_i + r_j) and mass m* = m_i m_j/(m_i + m_j).
+// effective radius R* = r_i r_j/(r_i + r_j), mass m* = m_i m_j/(m_i + m_j) and sqrt(m*).
 struct ContactInput {
-    Real delta, ddelta, r_eff, m_eff;
+    Real delta, ddelta, r_eff, m_eff, sqrt_m_eff;
 };
 
 // Linear spring-dashpot (Cundall & Strack 1979): F_n = k_n delta + 2 zeta sqrt(m* k_n) ddelta,
@@ -26,8 +26,8 @@ struct ContactInput {
 struct LinearLaw {
     static constexpr const char* name = "linear";
     DF_HD static NormalResponse normal(const PairParams& p, const ContactInput& c) {
-        const Real gn = 2 * p.damping * std::sqrt(c.m_eff * p.kn);
-        const Real gt = 2 * p.damping * std::sqrt(c.m_eff * p.kt);
+        const Real gn = p.linear_gn * c.sqrt_m_eff; // 2 zeta sqrt(k_n) sqrt(m*)
+        const Real gt = p.linear_gt * c.sqrt_m_eff; // 2 zeta sqrt(k_t) sqrt(m*)
         const Real fn = p.kn * c.delta + gn * c.ddelta;
         return {fn, p.kt, gt, p.mu * (fn > 0 ? fn : Real(0)), p.kn};
     }
@@ -44,11 +44,11 @@ struct HertzMindlinLaw {
         const Real sq_rd = std::sqrt(c.r_eff * c.delta);
         const Real kh = Real(4) / 3 * p.e_star * std::sqrt(c.r_eff);
         const Real root_d = std::sqrt(c.delta);
-        const Real gn = p.damping * std::sqrt(c.m_eff * kh) * std::sqrt(root_d);
+        const Real gn = p.damping * c.sqrt_m_eff * std::sqrt(kh * root_d);
         Real fn = kh * c.delta * root_d + gn * c.ddelta;
         fn = fn > 0 ? fn : Real(0);
         const Real kt = 8 * p.g_star * sq_rd;
-        const Real gt = p.damping * std::sqrt(Real(2) / 3 * c.m_eff * kt);
+        const Real gt = p.damping * c.sqrt_m_eff * std::sqrt(Real(2) / 3 * kt);
         return {fn, kt, gt, p.mu * fn, Real(1.5) * kh * root_d};
     }
     DF_HD static Real friction_factor(Real) { return 1; }
@@ -63,7 +63,7 @@ struct DcdemLaw {
     static constexpr const char* name = "dcdem";
     DF_HD static NormalResponse normal(const PairParams& p, const ContactInput& c) {
         const Real kn = Real(4) / 3 * p.e_star * std::sqrt(c.r_eff);
-        const Real gn = p.damping * std::sqrt(6 * c.m_eff * p.e_star * std::sqrt(c.r_eff));
+        const Real gn = p.damping * c.sqrt_m_eff * std::sqrt(6 * p.e_star * std::sqrt(c.r_eff));
         const Real root_d = std::sqrt(c.delta), quarter = std::sqrt(root_d);
         Real fn = kn * c.delta * root_d + gn * quarter * c.ddelta;
         fn = fn > 0 ? fn : Real(0);
@@ -75,15 +75,15 @@ struct DcdemLaw {
 
 using ContactLawRegistry = models::Registry<LinearLaw, HertzMindlinLaw, DcdemLaw>;
 
-// Dispatches on the pair's law (a switch, so the same code runs on a GPU).
-DF_HD inline NormalResponse normal_response(const PairParams& p, const ContactInput& c, Real vt_mag,
-                                            Real& friction_factor) {
+// Dispatches on the pair's law (a switch, so the same code runs on a GPU); vt2 = |v_t|^2.
+DF_HD DF_HOT_INLINE NormalResponse normal_response(const PairParams& p, const ContactInput& c,
+                                                   Real vt2, Real& friction_factor) {
     switch (p.law) {
     case LawId::hertz_mindlin:
         friction_factor = 1;
         return HertzMindlinLaw::normal(p, c);
     case LawId::dcdem:
-        friction_factor = DcdemLaw::friction_factor(vt_mag);
+        friction_factor = DcdemLaw::friction_factor(std::sqrt(vt2));
         return DcdemLaw::normal(p, c);
     default:
         friction_factor = 1;

@@ -1,6 +1,7 @@
 #pragma once
 #include "debrisflow/core/hd.hpp"
 #include "debrisflow/core/real.hpp"
+#include <cmath>
 #include <cstdint>
 #include <type_traits>
 
@@ -22,6 +23,14 @@ struct PairParams {
     Real mu = 0;      // Coulomb friction coefficient
     Real mu_roll = 0; // rolling friction coefficient (lever arm / effective radius)
     Real restitution = 1;
+    // linear law's dashpots per sqrt(m*): 2 zeta sqrt(k_n) and 2 zeta sqrt(k_t)
+    // (set_linear_damping)
+    Real linear_gn = 0, linear_gt = 0;
+    DF_HD void set_linear_damping(Real zeta) {
+        damping = zeta;
+        linear_gn = 2 * zeta * std::sqrt(kn);
+        linear_gt = 2 * zeta * std::sqrt(kt);
+    }
 };
 static_assert(std::is_trivially_copyable_v<PairParams>);
 

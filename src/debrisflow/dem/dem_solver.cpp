@@ -228,47 +228,23 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
     const PairTable table{table_.data(), int(materials_.size())};
     const neighbors::GridView grid = grid_.view();
     const int nt = n > parallel_min ? omp_get_max_threads() : 1;
-    buffers_.resize(std::size_t(nt));
-    for (auto& b : buffers_) b.resize(6 * std::size_t(n));
+    balance_threads(nt);
+    acc_.resize(6 * std::size_t(n));
+    spills_.resize(std::size_t(nt));
+    Real* acc = acc_.data();
+    const Index* range = ranges_.data();
     const Index gcap = grain_slots_.capacity();
     const Index* gp = grain_slots_.partners();
     const Index* gcount = grain_slots_.counts();
     ContactHistory* gh = grain_slots_.history();
     long touching = 0;
     Real fsum = 0;
+    const bool measure = measure_contact_force_; // |F| summed only for the settling ratio
     // Only the evaluation that ends a step advances the tangential springs and hands impulses
     // to bodies and FEM nodes; a re-evaluation of the same state (compute_forces) must not.
     const bool ends_step = half_kick > 0;
     const Real h_contact = ends_step ? current_h_ : 0;
     const GrainState* hot = hot_.data();
-#pragma omp parallel reduction(+ : touching, fsum) if (n > parallel_min)
-    {
-        Real* b = buffers_[std::size_t(omp_get_thread_num())].data();
-        std::fill(b, b + 6 * std::size_t(n), Real(0));
-#pragma omp for schedule(static, 64)
-        for (Index i = 0; i < n; ++i) {
-            const std::size_t base = std::size_t(i) * std::size_t(gcap);
-            const GrainState si = hot[i];
-            Vec3 fi{}, ti{};
-            const Index ci = gcount[i];
-            for (Index k = 0; k < ci; ++k) {
-                const Index j = gp[base + std::size_t(k)];
-                ContactHistory& h = gh[base + std::size_t(k)];
-                GrainPairForce c;
-                if (!grain_slot_force(table, grid, si, hot[j], h_contact, h, c)) continue;
-                fi += c.force_i;
-                ti += c.torque_i;
-                Real* bj = b + 6 * std::size_t(j);
-                bj[0] -= c.force_i.x, bj[1] -= c.force_i.y, bj[2] -= c.force_i.z;
-                bj[3] += c.torque_j.x, bj[4] += c.torque_j.y, bj[5] += c.torque_j.z;
-                fsum += norm(c.force_i);
-                ++touching;
-            }
-            Real* bi = b + 6 * std::size_t(i);
-            bi[0] += fi.x, bi[1] += fi.y, bi[2] += fi.z;
-            bi[3] += ti.x, bi[4] += ti.y, bi[5] += ti.z;
-        }
-    }
     // Per grain: sum the thread buffers, add gravity and wall contacts, finish the kick.
     const auto& prims = walls_.primitives();
     auto& wl = walls_.walls();
@@ -284,14 +260,14 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
         std::size_t wall;
         ContactLoad load;
     };
-    std::vector<RecordedLoad> recorded;
+    struct ThreadSums {
+        std::vector<Real> wall, body;
+        std::vector<RecordedLoad> loads;
+    };
+    std::vector<ThreadSums> partial(static_cast<std::size_t>(nt));
     const Index wcap = wall_slots_.capacity();
     const Index* wp = wall_slots_.partners();
     const Index* wcount = wall_slots_.counts();
-    const int nbuf = int(buffers_.size());
-    std::vector<const Real*> buf_ptrs;
-    for (const auto& b : buffers_) buf_ptrs.push_back(b.data());
-    const Real* const* bufs = buf_ptrs.data();
     ContactHistory* wh = wall_slots_.history();
     const Vec3 grav = params_.gravity;
     const bool plane = params_.dim == 2;
@@ -321,20 +297,64 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
     Vec3* fimp = fluid_ && ends_step ? fluid_->impulse.data() : nullptr;
     Vec3* ffelt = fluid_ ? fluid_->felt.data() : nullptr;
     const std::int32_t* clump_of = clump_of_id_.empty() ? nullptr : clump_of_id_.data();
-#pragma omp parallel reduction(+ : touching, fsum) if (n > parallel_min)
+    // One parallel region, each thread on its own contiguous range of grains (balanced on
+    // contact slots): (1) grain-grain contacts of its rows (half list: each pair once, Newton's
+    // third law), the reaction on partners in its range added at once, on others set aside;
+    // (2) after all rows, the reactions set aside for its range by the other threads, in
+    // thread order; (3) per grain: gravity, walls, bodies, fluid, the closing half kick.
+#pragma omp parallel num_threads(nt) reduction(+ : touching, fsum) if (nt > 1)
     {
+        const int th = omp_get_thread_num();
+        const Index lo = range[th], hi = range[th + 1];
+        std::fill(acc + 6 * std::size_t(lo), acc + 6 * std::size_t(hi), Real(0));
+        std::vector<Spill>& spill = spills_[std::size_t(th)];
+        spill.clear();
+        for (Index i = lo; i < hi; ++i) {
+            const std::size_t base = std::size_t(i) * std::size_t(gcap);
+            const GrainState si = hot[i];
+            Vec3 fi{}, ti{};
+            const Index ci = gcount[i];
+            for (Index k = 0; k < ci; ++k) {
+                const Index j = gp[base + std::size_t(k)];
+                ContactHistory& h = gh[base + std::size_t(k)];
+                GrainPairForce c;
+                if (!grain_slot_force(table, grid, si, hot[j], h_contact, h, c)) continue;
+                fi += c.force_i;
+                ti += c.torque_i;
+                if (j >= lo && j < hi) {
+                    Real* aj = acc + 6 * std::size_t(j);
+                    aj[0] -= c.force_i.x, aj[1] -= c.force_i.y, aj[2] -= c.force_i.z;
+                    aj[3] += c.torque_j.x, aj[4] += c.torque_j.y, aj[5] += c.torque_j.z;
+                } else {
+                    spill.push_back({j, -1 * c.force_i, c.torque_j});
+                }
+                if (measure) fsum += norm(c.force_i);
+                ++touching;
+            }
+            Real* ai = acc + 6 * std::size_t(i);
+            ai[0] += fi.x, ai[1] += fi.y, ai[2] += fi.z;
+            ai[3] += ti.x, ai[4] += ti.y, ai[5] += ti.z;
+        }
+        if (nt > 1) {
+#pragma omp barrier
+            for (int u = 0; u < nt; ++u) {
+                if (u == th) continue;
+                for (const Spill& sp : spills_[std::size_t(u)]) {
+                    if (sp.j < lo || sp.j >= hi) continue;
+                    Real* aj = acc + 6 * std::size_t(sp.j);
+                    aj[0] += sp.force.x, aj[1] += sp.force.y, aj[2] += sp.force.z;
+                    aj[3] += sp.torque.x, aj[4] += sp.torque.y, aj[5] += sp.torque.z;
+                }
+            }
+        }
         std::vector<Real> local(6 * nw, 0), obody(6 * nb, 0);
         std::vector<RecordedLoad> local_loads;
-#pragma omp for schedule(static)
-        for (Index i = 0; i < n; ++i) {
+        for (Index i = lo; i < hi; ++i) {
             // a clump member's force is its contacts'; gravity acts on the clump
             const bool member = clump_of && clump_of[g.id[i]] >= 0;
-            Vec3 f = (member ? Real(0) : g.mass[i]) * grav, t{};
-            for (int b = 0; b < nbuf; ++b) {
-                const Real* bi = bufs[b] + 6 * std::size_t(i);
-                f += Vec3{bi[0], bi[1], bi[2]};
-                t += Vec3{bi[3], bi[4], bi[5]};
-            }
+            const Real* ai = acc + 6 * std::size_t(i);
+            Vec3 f = (member ? Real(0) : g.mass[i]) * grav + Vec3{ai[0], ai[1], ai[2]};
+            Vec3 t{ai[3], ai[4], ai[5]};
             const std::size_t base = std::size_t(i) * std::size_t(wcap);
             const Index cw = wcount[i];
             if (cw > 0) {
@@ -397,7 +417,7 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
                     ws[3] += m.x, ws[4] += m.y, ws[5] += m.z;
                     if (record && wl[w].record_contacts)
                         local_loads.push_back({i, w, {cand.q[c], -1 * c2.force}});
-                    fsum += norm(c2.force);
+                    if (measure) fsum += norm(c2.force);
                     ++touching;
                 }
             }
@@ -423,7 +443,7 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
                     Real* bs = obody.data() + 6 * std::size_t(o.body);
                     bs[0] -= c.force_i.x, bs[1] -= c.force_i.y, bs[2] -= c.force_i.z;
                     bs[3] += tb.x, bs[4] += tb.y, bs[5] += tb.z;
-                    fsum += norm(c.force_i);
+                    if (measure) fsum += norm(c.force_i);
                     ++touching;
                 }
             }
@@ -443,17 +463,13 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
             g.force[i] = f;
             g.torque[i] = t;
         }
-#pragma omp critical(dem_wall_sum)
-        {
-            for (std::size_t k = 0; k < local.size(); ++k) wall_sum[k] += local[k];
-            for (std::size_t k = 0; k < obody.size(); ++k) body_sum[k] += obody[k];
-            recorded.insert(recorded.end(), local_loads.begin(), local_loads.end());
-        }
+        partial[std::size_t(th)] = {std::move(local), std::move(obody), std::move(local_loads)};
     }
-    if (record) { // in grain order, whatever order the threads finished in
-        std::stable_sort(recorded.begin(), recorded.end(),
-                         [](const auto& a, const auto& b) { return a.grain < b.grain; });
-        for (const auto& r : recorded) wl[r.wall].contacts.push_back(r.load);
+    // Walls' and bodies' sums in thread order (ranges ascend), so that a run repeats bitwise.
+    for (const ThreadSums& ps : partial) {
+        for (std::size_t k = 0; k < ps.wall.size(); ++k) wall_sum[k] += ps.wall[k];
+        for (std::size_t k = 0; k < ps.body.size(); ++k) body_sum[k] += ps.body[k];
+        for (const auto& r : ps.loads) wl[r.wall].contacts.push_back(r.load); // in grain order
     }
     if (clump_of) clump_forces(half_kick);
     if (obstacles_ && (ends_step || collect_obstacles) && current_h_ > 0) {
@@ -470,11 +486,30 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
     }
     if (fimp) fluid_->time += current_h_;
     contacts_ = touching;
-    sum_contact_force_ = fsum;
+    sum_contact_force_ = measure ? fsum : 0;
     for (std::size_t w = 0; w < nw; ++w) {
         wl[w].force = {wall_sum[6 * w], wall_sum[6 * w + 1], wall_sum[6 * w + 2]};
         wl[w].moment = {wall_sum[6 * w + 3], wall_sum[6 * w + 4], wall_sum[6 * w + 5]};
     }
+}
+
+void DemSolver::balance_threads(int nt) {
+    const Index n = grains_.size();
+    if (ranges_.size() == std::size_t(nt) + 1 && ranges_balanced_ == builds_ && ranges_.back() == n)
+        return;
+    // Contiguous ranges of about equal work: a grain's contact slots plus one for its own pass.
+    const Index* count = grain_slots_.counts();
+    long total = 0;
+    for (Index i = 0; i < n; ++i) total += 1 + count[i];
+    ranges_.assign(std::size_t(nt) + 1, n);
+    ranges_[0] = 0;
+    long sum = 0;
+    int t = 1;
+    for (Index i = 0; i < n && t < nt; ++i) {
+        sum += 1 + count[i];
+        while (t < nt && sum * nt >= total * t) ranges_[std::size_t(t++)] = i + 1;
+    }
+    ranges_balanced_ = builds_;
 }
 
 void DemSolver::step(Real h) {

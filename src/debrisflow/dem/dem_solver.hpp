@@ -94,7 +94,12 @@ public:
     Real mean_contact_force() const { return contacts_ > 0 ? sum_contact_force_ / contacts_ : 0; }
     // PFC's equilibrium ratio: mean unbalanced force / mean contact force (infinite while
     // there are fewer contacts than half the grains).
+    // The ratio needs the contact forces' magnitudes (a square root per contact), which a
+    // force evaluation sums only while measuring: settling turns it on; a caller that wants
+    // the ratio after a run turns it on before.
     Real unbalanced_ratio() const;
+    void measure_contact_force(bool on) { measure_contact_force_ = on; }
+    bool measuring_contact_force() const { return measure_contact_force_; }
     long list_builds() const { return builds_; }
 
     // What the grain-grain contact loop reads, for a backend that evaluates it elsewhere
@@ -155,7 +160,19 @@ private:
     std::uint64_t obstacles_seen_ = ~std::uint64_t(0);
     std::uint64_t walls_seen_ = ~std::uint64_t(0); // WallSet::layout() of the last rebuild
     long obstacle_builds_seen_ = -1;
-    std::vector<std::vector<Real>> buffers_;
+    // Grain-grain loop: each thread's contiguous range of grains (ranges_[t], ranges_[t+1]),
+    // balanced on contact slots at each rebuild (balance_threads); per grain the sum of its
+    // contact forces and torques (acc_, 6 reals); reactions on grains of another thread's
+    // range set aside per thread (spills_).
+    struct Spill {
+        Index j;
+        Vec3 force, torque;
+    };
+    void balance_threads(int threads);
+    std::vector<Index> ranges_;
+    long ranges_balanced_ = -1;
+    std::vector<Real> acc_;
+    std::vector<std::vector<Spill>> spills_;
     // Interleaved copy of the state the contact loop reads (one 96-byte record per grain
     // instead of twelve arrays), written by the drift; the GrainSet stays the master copy.
     std::vector<GrainState> hot_;
@@ -166,6 +183,7 @@ private:
     bool evaluated_ = false; // the last step's closing force evaluation is still current
     long contacts_ = 0, builds_ = 0;
     Real sum_contact_force_ = 0;
+    bool measure_contact_force_ = false;
     double t_neighbors_ = 0, t_forces_ = 0, t_integration_ = 0;
 };
 

@@ -23,15 +23,16 @@ struct GrainPairForce {
 // Contact of grains i and j with separation r = x_i - x_j, |r|^2 = d2 < (r_i + r_j)^2.
 // Contact point velocity of i relative to j: v_i - v_j - (r_i w_i + r_j w_j) x n; torques
 // -r_i n x F_t + M_r on i and -r_j n x F_t - M_r on j.
-DF_HD inline GrainPairForce grain_pair_force(const PairParams& p, const GrainState& i,
-                                             const GrainState& j, Vec3 r, Real d2, Real dt,
-                                             ContactHistory& h) {
+DF_HD DF_HOT_INLINE GrainPairForce grain_pair_force(const PairParams& p, const GrainState& i,
+                                                    const GrainState& j, Vec3 r, Real d2, Real dt,
+                                                    ContactHistory& h) {
     const Real d = std::sqrt(d2);
     const Vec3 n = (Real(1) / d) * r;
     const Vec3 vrel = i.v - j.v - cross(i.r * i.w + j.r * j.w, n);
-    const Real reff = i.r * j.r / (i.r + j.r), meff = i.m * j.m / (i.m + j.m);
-    const ContactResult c =
-        resolve_contact(p, i.r + j.r - d, n, vrel, i.w - j.w, reff, meff, dt, h);
+    // R* = r_i r_j / (r_i + r_j) and m* = m_i m_j / (m_i + m_j) with one division
+    const Real rs = i.r + j.r, ms = i.m + j.m, inv = Real(1) / (rs * ms);
+    const Real reff = i.r * j.r * ms * inv, meff = i.m * j.m * rs * inv;
+    const ContactResult c = resolve_contact(p, rs - d, n, vrel, i.w - j.w, reff, meff, dt, h);
     const Vec3 nxft = cross(n, c.ft);
     return {c.force, -i.r * nxft + c.mroll, -j.r * nxft - c.mroll};
 }
@@ -42,9 +43,9 @@ struct WallContactForce {
 
 // Contact of a grain with a wall primitive at closest point q and distance d < r (a wall has
 // infinite mass: R* = r, m* = m). The wall moves with velocity vw.
-DF_HD inline WallContactForce wall_contact_force(const PairParams& p, const GrainState& g,
-                                                 const WallPrimitive& w, Vec3 q, Real d, Vec3 vw,
-                                                 Real dt, ContactHistory& h) {
+DF_HD DF_HOT_INLINE WallContactForce wall_contact_force(const PairParams& p, const GrainState& g,
+                                                        const WallPrimitive& w, Vec3 q, Real d,
+                                                        Vec3 vw, Real dt, ContactHistory& h) {
     Vec3 n = w.n;
     if (w.type == PrimitiveType::triangle) {
         const Vec3 gap = g.x - q;

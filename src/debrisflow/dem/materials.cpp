@@ -99,7 +99,7 @@ std::vector<PairParams> build_pair_table(const std::vector<Material>& mats,
             p.g_star = cg > 0 ? 1 / cg : 0;
             if (law == LinearLaw::name) {
                 p.law = LawId::linear;
-                p.damping = linear_damping_ratio(p.restitution);
+                p.set_linear_damping(linear_damping_ratio(p.restitution));
             } else if (law == HertzMindlinLaw::name) {
                 p.law = LawId::hertz_mindlin;
                 p.damping = tsuji_alpha(p.restitution);
