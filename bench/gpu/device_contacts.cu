@@ -30,7 +30,8 @@ ContactComparison compare_grain_contacts(const dem::GrainContactInputs& in, int 
     // host: the same functor, one thread
     std::vector<Real> host_out(9 * slots);
     std::vector<dem::ContactHistory> host_hist(slots);
-    const dem::GrainSlotContact host{in, in.history, host_out.data(), host_hist.data()};
+    const std::vector<dem::ContactHistory> history = dem::slot_histories(in);
+    const dem::GrainSlotContact host{in, history.data(), host_out.data(), host_hist.data()};
     const auto t0 = std::chrono::steady_clock::now();
     for (std::size_t s = 0; s < slots; ++s) host(Index(s));
     cmp.host_ms =
@@ -45,10 +46,10 @@ ContactComparison compare_grain_contacts(const dem::GrainContactInputs& in, int 
     dev.in.grains = a.copy_in(in.grains, n);
     dev.in.partner = a.copy_in(in.partner, slots);
     dev.in.count = a.copy_in(in.count, n);
-    dev.in.history = nullptr;                        // read through history_in
+    dev.in.xi = dev.in.mroll = nullptr;              // read through history_in
     dev.in.grid.start = dev.in.grid.order = nullptr; // only separation() is used
     dev.in.table.params = a.copy_in(in.table.params, std::size_t(in.table.count * in.table.count));
-    dev.history_in = a.copy_in(in.history, slots);
+    dev.history_in = a.copy_in(history.data(), slots);
     dev.out = a.alloc<Real>(9 * slots);
     dev.history_out = a.alloc<dem::ContactHistory>(slots);
     EventTimer timer;

@@ -45,7 +45,7 @@ TEST(DemContactInputs, SlotSumsReproduceTheSolversContactForces) {
     dem::GrainContactInputs in = rig.solver->grain_contact_inputs();
     in.h = 0; // what compute_forces evaluates with
     const std::size_t n = std::size_t(in.n), slots = n * std::size_t(in.capacity);
-    const std::vector<dem::ContactHistory> history(in.history, in.history + slots);
+    const std::vector<dem::ContactHistory> history = dem::slot_histories(in);
     std::vector<Real> out(9 * slots);
     std::vector<dem::ContactHistory> history_out(slots);
     const dem::GrainSlotContact slot{in, history.data(), out.data(), history_out.data()};

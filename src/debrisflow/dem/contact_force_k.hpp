@@ -11,6 +11,19 @@ struct ContactHistory {
     Vec3 mroll;
 };
 
+// Where a contact's history is stored: its tangential spring, and its rolling moment when the
+// elastic-plastic rolling model is on (null otherwise: the contact slots of a case without it
+// keep only the spring, half the memory traffic of the contact loop).
+struct HistoryRef {
+    Vec3* xi;
+    Vec3* mroll;
+    DF_HD static HistoryRef of(ContactHistory& h) { return {&h.xi, &h.mroll}; }
+    DF_HD void clear() const {
+        *xi = Vec3{};
+        if (mroll) *mroll = Vec3{};
+    }
+};
+
 struct ContactResult {
     Vec3 force; // on grain i (the grain on the +n side), total
     Vec3 ft;    // tangential part of it
@@ -42,13 +55,13 @@ DF_HD DF_HOT_INLINE Vec3 rotate_into_plane(Vec3 v, Vec3 n) {
 // wrel = w_i - w_j.
 DF_HD DF_HOT_INLINE ContactResult resolve_contact(const PairParams& p, Real delta, Vec3 n,
                                                   Vec3 vrel, Vec3 wrel, Real r_eff, Real m_eff,
-                                                  Real dt, ContactHistory& h) {
+                                                  Real dt, HistoryRef h) {
     const Real vn = dot(vrel, n);
     const Vec3 vt = vrel - vn * n;
     Real factor = 1;
     const NormalResponse r = normal_response(
         p, ContactInput{delta, -vn, r_eff, m_eff, std::sqrt(m_eff)}, dot(vt, vt), factor);
-    Vec3 xi = rotate_into_plane(h.xi, n);
+    Vec3 xi = rotate_into_plane(*h.xi, n);
     xi += dt * vt;
     Vec3 ft = -r.kt * xi - r.gt * vt;
     const Real limit = r.friction * factor;
@@ -58,7 +71,7 @@ DF_HD DF_HOT_INLINE ContactResult resolve_contact(const PairParams& p, Real delt
         ft = (limit / ft_mag) * ft;
         xi = r.kt > 0 ? (Real(-1) / r.kt) * (ft + r.gt * vt) : Vec3{};
     }
-    h.xi = xi;
+    *h.xi = xi;
     Vec3 mroll{};
     if (p.rolling != RollingId::none && r.fn > 0) {
         const Vec3 wr = wrel - dot(wrel, n) * n;
@@ -68,13 +81,20 @@ DF_HD DF_HOT_INLINE ContactResult resolve_contact(const PairParams& p, Real delt
             if (w > 0) mroll = (-mmax / w) * wr;
         } else {
             const Real kr = Real(2.25) * r.kn_tangent * p.mu_roll * p.mu_roll * r_eff * r_eff;
-            mroll = rotate_into_plane(h.mroll, n) - (kr * dt) * wr;
+            // (a slot without rolling memory starts from zero moment every step)
+            mroll = (h.mroll ? rotate_into_plane(*h.mroll, n) : Vec3{}) - (kr * dt) * wr;
             const Real m = norm(mroll);
             if (m > mmax) mroll = (mmax / m) * mroll;
-            h.mroll = mroll;
+            if (h.mroll) *h.mroll = mroll;
         }
     }
     return {r.fn * n + ft, ft, mroll, r.fn};
+}
+
+DF_HD DF_HOT_INLINE ContactResult resolve_contact(const PairParams& p, Real delta, Vec3 n,
+                                                  Vec3 vrel, Vec3 wrel, Real r_eff, Real m_eff,
+                                                  Real dt, ContactHistory& h) {
+    return resolve_contact(p, delta, n, vrel, wrel, r_eff, m_eff, dt, HistoryRef::of(h));
 }
 
 } // namespace debrisflow::dem

@@ -13,7 +13,7 @@ void ContactSlots::remap(const std::vector<Index>& from) {
     const std::size_t cap = std::size_t(cap_), n = from.size();
     std::vector<Index> count(n, 0), partner(n * cap);
     std::vector<std::uint32_t> key(n * cap);
-    std::vector<ContactHistory> hist(n * cap);
+    std::vector<Vec3> xi(n * cap), mroll(rolling_ ? n * cap : 0);
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {
         if (from[i] < 0) continue;
@@ -22,13 +22,15 @@ void ContactSlots::remap(const std::vector<Index>& from) {
         for (std::size_t k = 0; k < cap; ++k) {
             partner[i * cap + k] = partner_[f * cap + k];
             key[i * cap + k] = key_[f * cap + k];
-            hist[i * cap + k] = hist_[f * cap + k];
+            xi[i * cap + k] = xi_[f * cap + k];
+            if (rolling_) mroll[i * cap + k] = mroll_[f * cap + k];
         }
     }
     count_.swap(count);
     partner_.swap(partner);
     key_.swap(key);
-    hist_.swap(hist);
+    xi_.swap(xi);
+    mroll_.swap(mroll);
 }
 
 std::size_t ContactSlots::slots() const {

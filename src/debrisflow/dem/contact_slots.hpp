@@ -25,13 +25,23 @@ public:
     // General reindexing: new grain i takes old grain from[i]'s slots; from[i] < 0 is a new
     // grain without contacts. Used when grains are removed (outlets) or inserted (feeds).
     void remap(const std::vector<Index>& from);
-    void clear_history() { std::fill(hist_.begin(), hist_.end(), ContactHistory{}); }
+    void clear_history() {
+        std::fill(xi_.begin(), xi_.end(), Vec3{});
+        std::fill(mroll_.begin(), mroll_.end(), Vec3{});
+    }
+    // Whether the slots keep a rolling moment (the elastic-plastic rolling model); set before
+    // the first build.
+    void keep_rolling(bool on) { rolling_ = on; }
 
     Index capacity() const { return cap_; }
     Index count(Index i) const { return count_[std::size_t(i)]; }
     const Index* partners() const { return partner_.data(); }
     const Index* counts() const { return count_.data(); }
-    ContactHistory* history() { return hist_.data(); }
+    Vec3* tangential() { return xi_.data(); }
+    Vec3* rolling() { return rolling_ ? mroll_.data() : nullptr; }
+    HistoryRef history(std::size_t slot) {
+        return {xi_.data() + slot, rolling_ ? mroll_.data() + slot : nullptr};
+    }
     std::size_t slots() const;
     // Saves or restores partners, keys and contact histories (dem/dem_checkpoint.cpp).
     void state(checkpoint::Archive& ar);
@@ -40,7 +50,8 @@ private:
     Index cap_ = 8;
     std::vector<Index> count_, partner_, old_count_;
     std::vector<std::uint32_t> key_, old_key_;
-    std::vector<ContactHistory> hist_, old_hist_;
+    bool rolling_ = false;
+    std::vector<Vec3> xi_, old_xi_, mroll_, old_mroll_; // mroll_ empty without rolling
 };
 
 template <class Candidates> void ContactSlots::build(Index n, const Candidates& candidates) {
@@ -48,14 +59,17 @@ template <class Candidates> void ContactSlots::build(Index n, const Candidates& 
     const Index old_cap = cap_;
     old_count_.swap(count_);
     old_key_.swap(key_);
-    old_hist_.swap(hist_);
+    old_xi_.swap(xi_);
+    old_mroll_.swap(mroll_);
     if (!had) old_count_.assign(std::size_t(n), 0);
     for (;;) {
         const Index cap = cap_;
         count_.assign(std::size_t(n), 0);
         partner_.resize(std::size_t(n) * std::size_t(cap));
         key_.resize(partner_.size());
-        hist_.assign(partner_.size(), ContactHistory{});
+        xi_.assign(partner_.size(), Vec3{});
+        mroll_.assign(rolling_ ? partner_.size() : 0, Vec3{});
+        const bool had_rolling = old_mroll_.size() == old_xi_.size();
         Index worst = 0;
 #pragma omp parallel for schedule(dynamic, 256) reduction(max : worst) if (n > 4096)
         for (Index i = 0; i < n; ++i) {
@@ -69,7 +83,10 @@ template <class Candidates> void ContactSlots::build(Index n, const Candidates& 
                     key_[base + std::size_t(c)] = key;
                     for (Index k = 0; k < old_c; ++k)
                         if (old_key_[old_base + std::size_t(k)] == key) {
-                            hist_[base + std::size_t(c)] = old_hist_[old_base + std::size_t(k)];
+                            const std::size_t to = base + std::size_t(c),
+                                              from = old_base + std::size_t(k);
+                            xi_[to] = old_xi_[from];
+                            if (rolling_ && had_rolling) mroll_[to] = old_mroll_[from];
                             break;
                         }
                 }

@@ -27,18 +27,19 @@ void ContactSlots::state(checkpoint::Archive& ar) {
         // saved as zeros, so equal states give equal files.
         std::vector<Index> partner(partner_.size(), 0);
         std::vector<std::uint32_t> key(key_.size(), 0);
-        std::vector<ContactHistory> hist(hist_.size(), ContactHistory{});
+        std::vector<Vec3> xi(xi_.size(), Vec3{}), mroll(mroll_.size(), Vec3{});
         for (std::size_t i = 0; i < count_.size(); ++i)
             for (std::size_t k = 0; k < std::size_t(std::min(count_[i], cap_)); ++k) {
                 const std::size_t s = i * std::size_t(cap_) + k;
-                partner[s] = partner_[s], key[s] = key_[s], hist[s] = hist_[s];
+                partner[s] = partner_[s], key[s] = key_[s], xi[s] = xi_[s];
+                if (rolling_) mroll[s] = mroll_[s];
             }
-        ar(cap_, count_, partner, key, hist);
+        ar(cap_, count_, partner, key, xi, mroll);
         return;
     }
-    ar(cap_, count_, partner_, key_, hist_);
+    ar(cap_, count_, partner_, key_, xi_, mroll_);
     if (partner_.size() != count_.size() * std::size_t(cap_) || key_.size() != partner_.size() ||
-        hist_.size() != partner_.size())
+        xi_.size() != partner_.size() || mroll_.size() != (rolling_ ? partner_.size() : 0))
         ar.fail("contact slots that do not match");
 }
 

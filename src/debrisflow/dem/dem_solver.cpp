@@ -27,6 +27,10 @@ DemSolver::DemSolver(const DemParams& params, GrainSet& grains, WallSet& walls,
     : params_(params), grains_(grains), walls_(walls), materials_(std::move(materials)),
       table_(build_pair_table(materials_, overrides, params.rolling)), domain_(domain) {
     map_clumps();
+    // Contact slots keep a rolling moment only for the elastic-plastic rolling model.
+    const bool epsd = std::any_of(table_.begin(), table_.end(),
+                                  [](const PairParams& p) { return p.rolling == RollingId::epsd; });
+    for (auto* slots : {&grain_slots_, &wall_slots_, &obstacle_slots_}) slots->keep_rolling(epsd);
     for (Real r : grains_.radius) max_radius_ = std::max(max_radius_, r);
     skin_ = params_.skin * 2 * max_radius_;
     auto_dt_ = critical_dt(grains_, wall_materials(), materials_, table_, params_, domain_,
@@ -55,7 +59,8 @@ GrainContactInputs DemSolver::grain_contact_inputs() {
             grains_.size(),
             grain_slots_.partners(),
             grain_slots_.counts(),
-            grain_slots_.history(),
+            grain_slots_.tangential(),
+            grain_slots_.rolling(),
             grain_slots_.capacity(),
             PairTable{table_.data(), int(materials_.size())},
             grid_.view(),
@@ -236,7 +241,8 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
     const Index gcap = grain_slots_.capacity();
     const Index* gp = grain_slots_.partners();
     const Index* gcount = grain_slots_.counts();
-    ContactHistory* gh = grain_slots_.history();
+    Vec3* gxi = grain_slots_.tangential();
+    Vec3* groll = grain_slots_.rolling();
     long touching = 0;
     Real fsum = 0;
     const bool measure = measure_contact_force_; // |F| summed only for the settling ratio
@@ -268,7 +274,11 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
     const Index wcap = wall_slots_.capacity();
     const Index* wp = wall_slots_.partners();
     const Index* wcount = wall_slots_.counts();
-    ContactHistory* wh = wall_slots_.history();
+    Vec3* wxi = wall_slots_.tangential();
+    Vec3* wroll = wall_slots_.rolling();
+    const auto wall_history = [=](std::size_t slot) {
+        return HistoryRef{wxi + slot, wroll ? wroll + slot : nullptr};
+    };
     const Vec3 grav = params_.gravity;
     const bool plane = params_.dim == 2;
     // nodal (deforming) triangles: corner nodes, their velocities and reaction impulses
@@ -286,7 +296,8 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
     const Index* op = obstacles_ ? obstacle_slots_.partners() : nullptr;
     const Index* ocount =
         obstacles_ && obstacle_slots_.slots() > 0 ? obstacle_slots_.counts() : nullptr;
-    ContactHistory* oh = obstacle_slots_.history();
+    Vec3* oxi = obstacle_slots_.tangential();
+    Vec3* oroll = obstacle_slots_.rolling();
     const ObstacleSphere* osph = obstacles_ ? obstacles_->spheres.data() : nullptr;
     const Vec3* ocom = obstacles_ ? obstacles_->body_com.data() : nullptr;
     // fluid loads (unresolved SPH-DEM coupling): held force plus drag with the grain's velocity
@@ -316,7 +327,8 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
             const Index ci = gcount[i];
             for (Index k = 0; k < ci; ++k) {
                 const Index j = gp[base + std::size_t(k)];
-                ContactHistory& h = gh[base + std::size_t(k)];
+                const std::size_t sk = base + std::size_t(k);
+                const HistoryRef h{gxi + sk, groll ? groll + sk : nullptr};
                 GrainPairForce c;
                 if (!grain_slot_force(table, grid, si, hot[j], h_contact, h, c)) continue;
                 fi += c.force_i;
@@ -364,13 +376,13 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
                     const Index pidx = wp[base + std::size_t(k)];
                     const WallPrimitive& pr = prims[std::size_t(pidx)];
                     if (!wl[std::size_t(pr.wall)].active) {
-                        wh[base + std::size_t(k)] = ContactHistory{};
+                        wall_history(base + std::size_t(k)).clear();
                         continue;
                     }
                     const Vec3 q = closest_point(pr, si.x);
                     const Real d = wall_distance(pr, si.x, q);
                     if (d >= si.r) {
-                        wh[base + std::size_t(k)] = ContactHistory{};
+                        wall_history(base + std::size_t(k)).clear();
                         continue;
                     }
                     cand.add(k, q, d);
@@ -380,7 +392,7 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
                     const Index k = cand.slot[c];
                     const WallPrimitive& pr = prims[std::size_t(wp[base + std::size_t(k)])];
                     if (cand.covered(c, prims, wp + base, si.r, si.x)) {
-                        wh[base + std::size_t(k)] = ContactHistory{};
+                        wall_history(base + std::size_t(k)).clear();
                         continue;
                     }
                     const std::size_t w = std::size_t(pr.wall);
@@ -396,7 +408,7 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
                     }
                     const WallContactForce c2 =
                         wall_contact_force(table(si.material, mw), si, pr, cand.q[c], cand.d[c], vw,
-                                           h_contact, wh[base + std::size_t(k)]);
+                                           h_contact, wall_history(base + std::size_t(k)));
                     if (nc && node_j) {
                         for (int a = 0; a < 3; ++a) {
                             Vec3& J = node_j[nc->node[std::size_t(a)]];
@@ -427,11 +439,12 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
                 const std::size_t obase = std::size_t(i) * std::size_t(ocap);
                 for (Index k = 0; k < co; ++k) {
                     const ObstacleSphere& o = osph[op[obase + std::size_t(k)]];
-                    ContactHistory& hk = oh[obase + std::size_t(k)];
+                    const std::size_t sk = obase + std::size_t(k);
+                    const HistoryRef hk{oxi + sk, oroll ? oroll + sk : nullptr};
                     const Vec3 r = si.x - o.x;
                     const Real rs = si.r + o.r, d2 = dot(r, r);
                     if (d2 >= rs * rs || d2 == 0) {
-                        hk = ContactHistory{};
+                        hk.clear();
                         continue;
                     }
                     const GrainState so{o.x, o.v, o.w, o.r, o.m, o.material};

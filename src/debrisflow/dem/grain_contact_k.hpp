@@ -25,7 +25,7 @@ struct GrainPairForce {
 // -r_i n x F_t + M_r on i and -r_j n x F_t - M_r on j.
 DF_HD DF_HOT_INLINE GrainPairForce grain_pair_force(const PairParams& p, const GrainState& i,
                                                     const GrainState& j, Vec3 r, Real d2, Real dt,
-                                                    ContactHistory& h) {
+                                                    HistoryRef h) {
     const Real d = std::sqrt(d2);
     const Vec3 n = (Real(1) / d) * r;
     const Vec3 vrel = i.v - j.v - cross(i.r * i.w + j.r * j.w, n);
@@ -37,6 +37,12 @@ DF_HD DF_HOT_INLINE GrainPairForce grain_pair_force(const PairParams& p, const G
     return {c.force, -i.r * nxft + c.mroll, -j.r * nxft - c.mroll};
 }
 
+DF_HD DF_HOT_INLINE GrainPairForce grain_pair_force(const PairParams& p, const GrainState& i,
+                                                    const GrainState& j, Vec3 r, Real d2, Real dt,
+                                                    ContactHistory& h) {
+    return grain_pair_force(p, i, j, r, d2, dt, HistoryRef::of(h));
+}
+
 struct WallContactForce {
     Vec3 force, torque, mroll; // on the grain
 };
@@ -45,7 +51,7 @@ struct WallContactForce {
 // infinite mass: R* = r, m* = m). The wall moves with velocity vw.
 DF_HD DF_HOT_INLINE WallContactForce wall_contact_force(const PairParams& p, const GrainState& g,
                                                         const WallPrimitive& w, Vec3 q, Real d,
-                                                        Vec3 vw, Real dt, ContactHistory& h) {
+                                                        Vec3 vw, Real dt, HistoryRef h) {
     Vec3 n = w.n;
     if (w.type == PrimitiveType::triangle) {
         const Vec3 gap = g.x - q;
@@ -57,6 +63,12 @@ DF_HD DF_HOT_INLINE WallContactForce wall_contact_force(const PairParams& p, con
     const Vec3 vrel = g.v - vw - g.r * cross(g.w, n);
     const ContactResult c = resolve_contact(p, g.r - d, n, vrel, g.w, g.r, g.m, dt, h);
     return {c.force, -g.r * cross(n, c.ft) + c.mroll, c.mroll};
+}
+
+DF_HD DF_HOT_INLINE WallContactForce wall_contact_force(const PairParams& p, const GrainState& g,
+                                                        const WallPrimitive& w, Vec3 q, Real d,
+                                                        Vec3 vw, Real dt, ContactHistory& h) {
+    return wall_contact_force(p, g, w, q, d, vw, dt, HistoryRef::of(h));
 }
 
 // The overlapping wall primitives of one grain, sorted by distance, so that a contact seen

@@ -3,6 +3,7 @@
 #include "debrisflow/dem/grain_contact_k.hpp"
 #include "debrisflow/neighbors/grid_view_k.hpp"
 #include <type_traits>
+#include <vector>
 
 namespace debrisflow::dem {
 
@@ -12,7 +13,7 @@ struct GrainContactInputs {
     const GrainState* grains; // the loop's interleaved copy of the grain state
     Index n;
     const Index *partner, *count;
-    ContactHistory* history;
+    Vec3 *xi, *mroll; // the slots' tangential springs and rolling moments (null: no rolling)
     Index capacity;
     PairTable table;
     neighbors::GridView grid; // separation() only (periodic images)
@@ -24,15 +25,23 @@ static_assert(std::is_trivially_copyable_v<GrainContactInputs>);
 // force in c when they touch; false, and the slot's history cleared, when they do not.
 DF_HD DF_HOT_INLINE bool grain_slot_force(const PairTable& table, const neighbors::GridView& grid,
                                           const GrainState& si, const GrainState& sj, Real h,
-                                          ContactHistory& history, GrainPairForce& c) {
+                                          HistoryRef history, GrainPairForce& c) {
     const Vec3 r = grid.separation(si.x, sj.x);
     const Real rs = si.r + sj.r, d2 = dot(r, r);
     if (d2 >= rs * rs) {
-        history = ContactHistory{};
+        history.clear();
         return false;
     }
     c = grain_pair_force(table(si.material, sj.material), si, sj, r, d2, h, history);
     return true;
+}
+
+// Every slot's history as one array of ContactHistory (zero rolling moments without rolling),
+// for GrainSlotContact.
+inline std::vector<ContactHistory> slot_histories(const GrainContactInputs& in) {
+    std::vector<ContactHistory> h(std::size_t(in.n) * std::size_t(in.capacity));
+    for (std::size_t s = 0; s < h.size(); ++s) h[s] = {in.xi[s], in.mroll ? in.mroll[s] : Vec3{}};
+    return h;
 }
 
 // One contact slot s = i * capacity + k as DemSolver::forces evaluates it (grain_slot_force):
@@ -51,8 +60,9 @@ struct GrainSlotContact {
         for (int c = 0; c < 9; ++c) o[c] = 0;
         ContactHistory h = history_in[s];
         GrainPairForce c;
-        if (k < in.count[i] && grain_slot_force(in.table, in.grid, in.grains[i],
-                                                in.grains[in.partner[s]], in.h, h, c)) {
+        if (k < in.count[i] &&
+            grain_slot_force(in.table, in.grid, in.grains[i], in.grains[in.partner[s]], in.h,
+                             HistoryRef::of(h), c)) {
             const Vec3 v[3] = {c.force_i, c.torque_i, c.torque_j};
             for (int q = 0; q < 3; ++q)
                 o[3 * q] = v[q].x, o[3 * q + 1] = v[q].y, o[3 * q + 2] = v[q].z;
