@@ -251,7 +251,7 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
     const bool ends_step = half_kick > 0;
     const Real h_contact = ends_step ? current_h_ : 0;
     const GrainState* hot = hot_.data();
-    // Per grain: sum the thread buffers, add gravity and wall contacts, finish the kick.
+    // What the per-grain pass needs: walls, bodies, fluid loads.
     const auto& prims = walls_.primitives();
     auto& wl = walls_.walls();
     const std::size_t nw = wl.size();
@@ -510,16 +510,19 @@ void DemSolver::balance_threads(int nt) {
     const Index n = grains_.size();
     if (ranges_.size() == std::size_t(nt) + 1 && ranges_balanced_ == builds_ && ranges_.back() == n)
         return;
-    // Contiguous ranges of about equal work: a grain's contact slots plus one for its own pass.
+    // Contiguous ranges of about equal work: a grain's contact slots with grains and walls plus
+    // one for its own pass.
     const Index* count = grain_slots_.counts();
+    const Index* walls = wall_slots_.slots() > 0 ? wall_slots_.counts() : nullptr;
+    const auto work = [&](Index i) { return 1 + count[i] + (walls ? walls[i] : 0); };
     long total = 0;
-    for (Index i = 0; i < n; ++i) total += 1 + count[i];
+    for (Index i = 0; i < n; ++i) total += work(i);
     ranges_.assign(std::size_t(nt) + 1, n);
     ranges_[0] = 0;
     long sum = 0;
     int t = 1;
     for (Index i = 0; i < n && t < nt; ++i) {
-        sum += 1 + count[i];
+        sum += work(i);
         while (t < nt && sum * nt >= total * t) ranges_[std::size_t(t++)] = i + 1;
     }
     ranges_balanced_ = builds_;
