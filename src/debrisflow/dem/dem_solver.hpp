@@ -115,6 +115,8 @@ public:
     const sph::Domain& domain() const { return domain_; }
 
 private:
+    // Below this many grains the loops run on one thread (OpenMP start-up would dominate).
+    static constexpr Index parallel_min = 4096;
     void rebuild();
     void configure_grid();
     // Copies positions, velocities, spins, radii, masses and materials into hot_.
