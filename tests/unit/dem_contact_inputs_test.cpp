@@ -2,17 +2,20 @@
 // GrainSlotContact over every slot (the functor the GPU check runs) reproduces the force and
 // torque the solver puts on each grain. This is what makes bench/gpu/gpu_dem_contacts a check
 // of the engine and not of a copy of it.
+#include "debrisflow/exec/parallel.hpp"
 #include "dem_rig.hpp"
 #include <cmath>
 #include <gtest/gtest.h>
 
 using namespace debrisflow;
 
-// A 4 x 4 x 4 cube of overlapping Hertz-Mindlin spheres with rolling resistance, stirred with
+namespace {
+
+// A side^3 cube of overlapping Hertz-Mindlin spheres with rolling resistance, stirred with
 // deterministic velocities and spins, no gravity, no walls: every force is a grain contact.
 // After 50 steps (loaded tangential and rolling springs) the solver re-evaluates its forces
 // (step size 0) and the slot sums must equal them to rounding (1e-12 of the largest).
-TEST(DemContactInputs, SlotSumsReproduceTheSolversContactForces) {
+void expect_slot_sums_equal_solver_forces(int side) {
     test::DemRig rig;
     dem::Material m;
     m.name = "rock";
@@ -25,9 +28,9 @@ TEST(DemContactInputs, SlotSumsReproduceTheSolversContactForces) {
     m.rolling_friction = 0.1;
     const Real r = 0.01, spacing = 1.998 * r;
     int k = 0;
-    for (int a = 0; a < 4; ++a)
-        for (int b = 0; b < 4; ++b)
-            for (int c = 0; c < 4; ++c, ++k) {
+    for (int a = 0; a < side; ++a)
+        for (int b = 0; b < side; ++b)
+            for (int c = 0; c < side; ++c, ++k) {
                 const Index i = rig.add_sphere({a * spacing, b * spacing, c * spacing},
                                                {0.05 * std::sin(1.3 * k), 0.05 * std::cos(0.7 * k),
                                                 0.05 * std::sin(2.1 * k + 1)},
@@ -67,7 +70,8 @@ TEST(DemContactInputs, SlotSumsReproduceTheSolversContactForces) {
         t[i] += Vec3{o[3], o[4], o[5]};
         t[j] += Vec3{o[6], o[7], o[8]};
     }
-    EXPECT_GT(touching, 50); // the cube is still in contact (144 lattice bonds at the start)
+    // the cube is still in contact (3 side^2 (side - 1) lattice bonds at the start: 144 for 4)
+    EXPECT_GT(touching, side * side * (side - 1));
     EXPECT_EQ(touching, rig.solver->contacts());
     Real fmax = 0, tmax = 0, df = 0, dt = 0;
     for (std::size_t i = 0; i < n; ++i) {
@@ -80,4 +84,20 @@ TEST(DemContactInputs, SlotSumsReproduceTheSolversContactForces) {
     ASSERT_GT(tmax, 0);
     EXPECT_LT(df, 1e-12 * fmax);
     EXPECT_LT(dt, 1e-12 * tmax);
+}
+
+} // namespace
+
+TEST(DemContactInputs, SlotSumsReproduceTheSolversContactForces) {
+    expect_slot_sums_equal_solver_forces(4);
+}
+
+// 17^3 = 4,913 grains, above the size at which the contact loop runs on several threads: on
+// two threads each owns a range of grains and hands the reactions on the other's grains over
+// after a barrier; the sums must still be every contact's, once.
+TEST(DemContactInputs, SlotSumsReproduceTheForcesOfTwoThreadRanges) {
+    const int before = exec::max_threads();
+    exec::set_threads(2);
+    expect_slot_sums_equal_solver_forces(17);
+    exec::set_threads(before);
 }
