@@ -281,6 +281,7 @@ void SphSolver::corrector(Real dt) {
             xs[k][i] = d.periodic[k] ? wrap(x, d.lo[k], d.hi[k]) : x;
         }
     });
+    shift_particles(dt);
 }
 
 void SphSolver::verlet_step(Real dt, bool euler) {
@@ -310,6 +311,7 @@ void SphSolver::verlet_step(Real dt, bool euler) {
             vo[k][i] = v;
         }
     });
+    shift_particles(dt);
 }
 
 time::DtLimit SphSolver::stable_dt() const {
