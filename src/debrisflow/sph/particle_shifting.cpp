@@ -3,9 +3,8 @@
 //   dr_i = -2 h U_max dt sum_j [1 + R (W_ij / W(dp))^n] grad_i W_ij V_j,   R = 0.2, n = 4
 // (their delta u = -Ma (2h) c0 sum ..., times dt; the same magnitude as Skillen et al. 2013
 // with A = 2), limited to |dr| <= U_max dt / 2. Near the free surface the shift would push
-// particles out of the fluid: it is projected on the surface's tangent plane within a kernel
-// support of the surface, and dropped on the surface itself (there its tangential part would
-// push the tip of a surge forward). Surface particles are found by the divergence
+// particles out of the fluid: it is projected on the surface's tangent plane there and dropped
+// for particles that are nearly isolated (spray). Surface particles are found by the divergence
 // of position (Lind et al. 2012), div r = -sum_j V_j r_ij . grad_i W_ij (= dim inside the
 // fluid), in place of Sun et al.'s eigenvalue of the renormalisation matrix; their outward
 // normal is -grad C / |grad C|, and "near the surface" is within the kernel support of one.
@@ -21,7 +20,7 @@ namespace {
 constexpr Real tensile_r = Real(0.2); // R of eq. 13 (n = 4 is written out below)
 // div r / dim: 0.62 (2D) and 0.67 (3D) on a flat surface of a lattice, 0.91 and 0.94 one row
 // below it, 0.37 on a 2D corner (Wendland C2, h = 1.5 dp); 0.75 is Lind et al.'s 2D threshold.
-constexpr Real surface_ratio = Real(0.75);
+constexpr Real surface_ratio = Real(0.75), spray_ratio = Real(0.35);
 
 // Particle i's data for the shifting sums, loaded once per row.
 struct ShiftSide {
@@ -100,9 +99,8 @@ void SphSolver::shift_particles(Real dt) {
                 });
         },
         models_.kernel);
-    // 2. Near the surface (a surface particle within the kernel support) the normal is the sum
-    //    of those particles' normals; the shift keeps its tangential part only. Surface
-    //    particles do not move.
+    // 2. Near the surface (a surface particle within the kernel support, or on it) the normal
+    //    is the sum of those particles' normals; the shift keeps its tangential part only.
     exec::for_each_pair_w<3>(
         list_, pv.n, buffers_, load,
         [=](const ShiftSide& a, Index i, Index j, Real* acc_i, Real* out_j) {
@@ -117,7 +115,7 @@ void SphSolver::shift_particles(Real dt) {
         },
         [=](Index i, const Real* total) {
             Vec3 dr{};
-            if (pv.is_fluid(i) && ratio[i] >= surface_ratio) {
+            if (pv.is_fluid(i) && ratio[i] >= spray_ratio) {
                 dr = -coeff * Vec3{grad[3 * i], grad[3 * i + 1], grad[3 * i + 2]};
                 const Vec3 m{total[0] + normal[3 * i], total[1] + normal[3 * i + 1],
                              total[2] + normal[3 * i + 2]};
