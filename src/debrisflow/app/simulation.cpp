@@ -238,10 +238,9 @@ io::RunReport Simulation::run(const RunOptions& opt) {
                           report.boundary, report.grains, report.threads));
     if (solver_)
         log_.line(fmt::format("sph: dp = {} m, kernel {}, h = {:.4g} m, c0 = {:.4g} m/s, viscosity "
-                              "{}, diffusion {}, walls {}, shifting {}; initial dt = {:.3g} s (limited by {})",
+                              "{}, diffusion {}, walls {}; initial dt = {:.3g} s (limited by {})",
                               spec_.dp, spec_.sph.kernel, spec_.sph.h, spec_.sph.c0,
                               spec_.sph.viscosity, spec_.sph.diffusion, spec_.sph.boundary,
-                              spec_.sph.shifting,
                               report.initial_dt.dt, report.initial_dt.limiter));
     if (dem_)
         log_.line(fmt::format("dem: {} grains{}, {:.4g} kg, {} walls; dt = {:.3g} s ({}; automatic "

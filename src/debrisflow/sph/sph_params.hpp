@@ -40,8 +40,6 @@ struct SphParams {
     // Boundary particles' density: "dbc" (continuity, Crespo et al. 2007) or "mdbc" (mirrored
     // from the fluid at a ghost node, English et al. 2022; particles with wall geometry).
     std::string boundary = "dbc";
-    // Particle shifting after each step: "none" or "delta_plus" (Sun et al. 2017).
-    std::string shifting = "none";
 };
 
 } // namespace debrisflow::sph

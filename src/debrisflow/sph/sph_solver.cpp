@@ -281,7 +281,6 @@ void SphSolver::corrector(Real dt) {
             xs[k][i] = d.periodic[k] ? wrap(x, d.lo[k], d.hi[k]) : x;
         }
     });
-    shift_particles(dt);
 }
 
 void SphSolver::verlet_step(Real dt, bool euler) {
@@ -311,7 +310,6 @@ void SphSolver::verlet_step(Real dt, bool euler) {
             vo[k][i] = v;
         }
     });
-    shift_particles(dt);
 }
 
 time::DtLimit SphSolver::stable_dt() const {

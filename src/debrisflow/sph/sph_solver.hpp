@@ -59,10 +59,6 @@ public:
     // the host by compute_forces_gather, on a GPU by bench/gpu); then takes the SPS stresses
     // it wrote as the particles'. Defined in sph_solver_gather.hpp.
     template <class F> void with_gather(F&& f);
-    // delta-plus-SPH particle shifting (sph.shifting = "delta_plus"; sph/particle_shifting.cpp):
-    // moves the fluid particles after a step of dt, using the current pair list. Nothing
-    // happens with sph.shifting = "none".
-    void shift_particles(Real dt);
     // Initial time-step estimate from the parameters alone (before any motion).
     time::DtLimit initial_dt() const;
     // Saves or restores the particles and the pair list's reference positions; a restored
@@ -97,7 +93,6 @@ private:
     SphModels models_;
     neighbors::CellGrid grid_;
     std::vector<Real> prho_, cs_, vol_;
-    std::vector<Real> shift_, shift_normal_, shift_ratio_; // particle shifting's work arrays
     std::vector<Real> tau_next_; // SPS stress of the gather loop, swapped in after it
     neighbors::PairList list_;
     exec::ScatterBuffers buffers_;
