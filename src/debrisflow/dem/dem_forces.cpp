@@ -140,6 +140,7 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
         }
         std::vector<Real> local(6 * nw, 0), obody(6 * nb, 0);
         std::vector<RecordedLoad> local_loads;
+        WallCandidates cand; // one per thread: its arrays are not cleared for every grain
         for (Index i = lo; i < hi; ++i) {
             // a clump member's force is its contacts'; gravity acts on the clump
             const bool member = clump_of && clump_of[g.id[i]] >= 0;
@@ -150,7 +151,7 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
             const Index cw = wcount[i];
             if (cw > 0) {
                 const GrainState si = hot[i];
-                WallCandidates cand;
+                cand.size = 0;
                 for (Index k = 0; k < cw; ++k) {
                     const Index pidx = wp[base + std::size_t(k)];
                     const WallPrimitive& pr = prims[std::size_t(pidx)];
