@@ -38,21 +38,40 @@ std::vector<Real> VelocityProbe::sample_fluid(const sph::SphSolver& solver) cons
     return {s.v.x, s.v.y, s.v.z, norm(s.v)};
 }
 
+// Kernel sum of the volume of fluid and boundary particles at x: 1 inside water or a solid,
+// 1/2 on their surface. Solids count as filled, so that a film on the bed raises the reading
+// from the bed's elevation by its thickness instead of staying dry until it is a kernel deep.
+Real filled_fraction(const sph::SphSolver& solver, Vec3 x) {
+    const auto& s = solver.particles();
+    const auto grid = solver.grid().view();
+    Real sum = 0;
+    std::visit(
+        [&](const auto& kernel) {
+            grid.for_each_neighbor(-1, x, s.x.data(), s.y.data(), s.z.data(),
+                                   [&](Index j, Vec3, Real r2) {
+                                       sum += kernel.w(std::sqrt(r2)) * s.mass[j] / s.rho[j];
+                                   });
+        },
+        solver.models().kernel);
+    return sum;
+}
+
 std::vector<Real> GaugeProbe::sample_fluid(const sph::SphSolver& solver) const {
+    // Downward from the domain's top, so that the thin under-filled layer DBC leaves between
+    // fluid and wall cannot pass for the surface; the first level filled to 0.5 is the surface.
     const auto& d = solver.domain();
-    bool wet = false;
     Real prev_w = 0;
-    for (Real z = d.lo.z; z <= d.hi.z; z += dz_) {
-        const Real w = interpolate(solver, {x_.x, x_.y, z}).weight;
-        if (!wet && w >= 0.5) wet = true;
-        if (wet && w < 0.5) {
-            // linear interpolation of the 0.5 crossing between z - dz and z
-            const Real f = (prev_w - Real(0.5)) / (prev_w - w);
-            return {z - dz_ + f * dz_};
+    for (Real z = d.hi.z; z >= d.lo.z; z -= dz_) {
+        const Real w = filled_fraction(solver, {x_.x, x_.y, z});
+        if (w >= 0.5) {
+            if (z == d.hi.z) return {z};
+            // linear interpolation of the 0.5 crossing between z and z + dz
+            const Real f = (w - Real(0.5)) / (w - prev_w);
+            return {z + f * dz_};
         }
         prev_w = w;
     }
-    return {wet ? d.hi.z : d.lo.z};
+    return {d.lo.z};
 }
 
 std::vector<Real> FrontProbe::sample_fluid(const sph::SphSolver& solver) const {

@@ -51,8 +51,10 @@ private:
     Vec3 x_;
 };
 
-// Free-surface elevation at (x, y): scanning upward from the domain floor, the first height
-// where the kernel-sum weight falls below 0.5 (as a wave gauge sees the water column).
+// Free-surface elevation at (x, y): the highest level where fluid and solid (boundary)
+// volume fill half the kernel, as a wave gauge sees the water column: a dry gauge reads the
+// bed's elevation, a film the bed plus the film's thickness; spray smaller than a kernel is
+// not seen, a jet overturning above the gauge is.
 class GaugeProbe : public FluidProbe {
 public:
     GaugeProbe(const io::ProbeSpec& s, const io::CaseSpec& c)
