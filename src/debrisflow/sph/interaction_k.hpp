@@ -29,12 +29,6 @@ template <class Kernel, class Viscosity, class Diffusion> struct PairTerms {
                        // the stress of the previous force evaluation (see sps_tau below)
     Real half_dp;      // dp / 2: smallest fluid-wall distance used in the no-slip extrapolation
     Real eta2;         // 0.01 h^2, regulariser of 1 / r^2 (Monaghan 1992)
-    bool mdbc = false; // boundary densities come from mDBC (MdbcDensity), not continuity
-
-    // drho/dt of particle i as integrated: zero for a boundary particle whose density mDBC sets.
-    DF_HD Real density_rate(Index i, Real drho) const {
-        return mdbc && !pv.is_fluid(i) && pv.wd[i] > 0 ? Real(0) : drho;
-    }
 
     // a_i += m_j g, a_j -= m_i g; drho_i += m_j cont + d.i, drho_j += m_i cont + d.j;
     // grad_w = grad_i W_ij (the velocity gradient of the SPS stress sums over it).
@@ -168,7 +162,7 @@ template <class Kernel, class Viscosity, class Diffusion> struct FluidInteractio
         pv.ax[i] = acc.x;
         pv.ay[i] = acc.y;
         pv.az[i] = acc.z;
-        pv.drho[i] = terms.density_rate(i, drho);
+        pv.drho[i] = drho;
         if constexpr (Viscosity::needs_velocity_gradient) {
             Real* t = tau_next + 6 * i;
             for (int k = 0; k < 6; ++k) t[k] = 0;

@@ -16,9 +16,12 @@ namespace debrisflow::sph {
 //   [ sum V G      sum V G (x) r ] [ grad rho_g ] = [ sum rho V G ].
 // Where the matrix is near singular (few fluid neighbours: a free surface, a corner) the
 // Shepard mean sum rho V W / sum V W is used while the ghost is inside the fluid (kernel sum
-// sum V W >= 1/2, the free-surface criterion); a ghost at or above a free surface, or with no
-// fluid near, gives rho_b the floor rho_min (the density of boundary_min_pressure). Boundary
-// particles without wall geometry (d = 0) are left to DBC.
+// sum V W >= 1/2, the free-surface criterion). A ghost at or above a free surface, or with no
+// fluid near, carries no information about the wall's pressure; there the boundary particle
+// keeps the density that the continuity equation integrates for it, as DBC (Crespo et al.
+// 2007), so that a sheet thinner than the kernel running along or against the wall is still
+// repelled instead of seeing p = 0. Boundary particles without wall geometry (d = 0) are left
+// to DBC. Densities never fall below rho_min (the density of boundary_min_pressure).
 template <class Kernel> struct MdbcDensity {
     particles::ParticleView pv;
     neighbors::GridView grid;
@@ -54,7 +57,7 @@ template <class Kernel> struct MdbcDensity {
                 for (int q = 0; q < 4; ++q) a[p][q] += vol * row[p] * col[q];
             }
         });
-        Real rho = rho_min;
+        Real rho = pv.rho[b]; // DBC's, unless the ghost node sees the fluid
         Real sol[4];
         if (a[0][0] > 0 && solve(a, rhs, sol)) {
             // rho_b = rho_g + (x_b - x_g) . grad rho_g, x_b - x_g = -2 d n
@@ -64,7 +67,7 @@ template <class Kernel> struct MdbcDensity {
             rho = rhs[0] / a[0][0]; // Shepard, for a ghost inside the fluid
         }
         // else the ghost is at or above a free surface (kernel sum < 1/2): the Shepard mean
-        // of the fluid below would push the fluid from a wall standing in air; p = 0 there.
+        // of the fluid below would push the fluid from a wall standing in air.
         pv.rho[b] = rho > rho_min ? rho : rho_min;
     }
 

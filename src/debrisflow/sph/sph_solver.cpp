@@ -194,7 +194,7 @@ void SphSolver::compute_forces() {
                     pv.ax[i] = total[0] + (fluid ? gravity.x : 0);
                     pv.ay[i] = total[1] + (fluid ? gravity.y : 0);
                     pv.az[i] = total[2] + (fluid ? gravity.z : 0);
-                    pv.drho[i] = terms.density_rate(i, total[3]);
+                    pv.drho[i] = total[3];
                     if constexpr (gradient) {
                         Real* t = tau + 6 * i;
                         for (int k = 0; k < 6; ++k) t[k] = 0;

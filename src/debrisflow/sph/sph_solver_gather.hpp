@@ -8,8 +8,7 @@
 namespace debrisflow::sph {
 
 template <class F> void SphSolver::with_pair_terms(F&& f, bool pairs) {
-    const bool mdbc = params_.boundary == "mdbc";
-    if (mdbc) update_boundary_density();
+    if (params_.boundary == "mdbc") update_boundary_density();
     update_pressure();
     update_viscosity(pairs);
     const bool sps = std::holds_alternative<models::LaminarSpsViscosity>(models_.viscosity);
@@ -23,7 +22,7 @@ template <class F> void SphSolver::with_pair_terms(F&& f, bool pairs) {
             using D = std::decay_t<decltype(diff)>;
             f(PairTerms<K, V, D>{pv, kernel, visc, diff, prho_.data(), cs_.data(), vol_.data(),
                                  sps ? set_.sps_tau.data() : nullptr, Real(0.5) * params_.dp,
-                                 Real(0.01) * params_.h * params_.h, mdbc});
+                                 Real(0.01) * params_.h * params_.h});
         },
         models_.kernel, models_.viscosity, models_.diffusion);
 }
