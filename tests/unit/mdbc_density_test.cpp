@@ -1,0 +1,63 @@
+// mDBC boundary density (sph/mdbc_k.hpp): a boundary particle whose ghost node lies inside a
+// fluid of uniform density takes that density; one whose ghost node sees less than half a
+// kernel of fluid keeps the density DBC's continuity equation gave it (never below rho_min).
+#include "debrisflow/kernels/wendland_c2_k.hpp"
+#include "debrisflow/neighbors/cell_grid.hpp"
+#include "debrisflow/particles/particle_set.hpp"
+#include "debrisflow/sph/mdbc_k.hpp"
+#include <gtest/gtest.h>
+
+using namespace debrisflow;
+
+namespace {
+
+constexpr Real dp = 0.01, h = 1.5 * dp, rho_fluid = 1003;
+
+// A 2D floor of three boundary layers under `fluid_rows` rows of fluid at rho_fluid; returns
+// the index of the middle particle of the floor's top layer.
+struct Floor {
+    particles::ParticleSet set;
+    neighbors::CellGrid grid;
+    Index probe = -1;
+
+    explicit Floor(int fluid_rows) {
+        const int nx = 20;
+        for (int layer = 0; layer < 3; ++layer)
+            for (int i = 0; i < nx; ++i) {
+                const Index k = set.size();
+                set.add({(i + Real(0.5)) * dp, 0, -(layer + Real(0.5)) * dp}, {}, 1000,
+                        1000 * dp * dp, particles::Kind::boundary, 0);
+                set.wnz[k] = 1;
+                set.wd[k] = (layer + Real(0.5)) * dp;
+                if (layer == 0 && i == nx / 2) probe = k;
+            }
+        for (int row = 0; row < fluid_rows; ++row)
+            for (int i = 0; i < nx; ++i)
+                set.add({(i + Real(0.5)) * dp, 0, (row + Real(0.5)) * dp}, {}, rho_fluid,
+                        1000 * dp * dp, particles::Kind::fluid, 0);
+        grid.configure({0, 0, -4 * dp}, {nx * dp, 0, 12 * dp}, 2 * h, 2, {false, false, false});
+        grid.build(set.x.data(), set.y.data(), set.z.data(), set.size());
+    }
+
+    Real boundary_density_after_mdbc(Real before, Real rho_min = 1000) {
+        set.rho[probe] = before;
+        const sph::MdbcDensity<kernels::WendlandC2> mdbc{
+            set.view(), grid.view(), kernels::WendlandC2(h, 2), h, rho_min, 2};
+        mdbc(probe);
+        return set.rho[probe];
+    }
+};
+
+TEST(MdbcDensity, GhostInsideTheFluidTakesTheFluidsDensity) {
+    Floor f(8); // the ghost, 1 dp above the surface, is under 7 more rows of fluid
+    EXPECT_NEAR(f.boundary_density_after_mdbc(1000), rho_fluid, 1e-9 * rho_fluid);
+    EXPECT_NEAR(f.boundary_density_after_mdbc(1010), rho_fluid, 1e-9 * rho_fluid);
+}
+
+TEST(MdbcDensity, DryGhostKeepsTheContinuityDensity) {
+    Floor f(0); // no fluid at all: nothing to mirror
+    EXPECT_EQ(f.boundary_density_after_mdbc(1007), 1007);
+    EXPECT_EQ(f.boundary_density_after_mdbc(990), 1000); // never below rho_min
+}
+
+} // namespace
