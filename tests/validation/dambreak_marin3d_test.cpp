@@ -26,11 +26,11 @@ using namespace debrisflow;
 
 namespace {
 
-constexpr double kArrivalThreshold = 0.005;  // m above the dry reading, as for the record
-constexpr double kH3Arrival = 0.190;         // s, MARIN record
-constexpr double kH2Arrival = 0.3535;        // s, MARIN record
-constexpr double kH4At0200 = 0.511;          // m, MARIN record at t = 0.200 s
-constexpr double kH4At0450 = 0.443;          // m, MARIN record at t = 0.450 s
+constexpr double kArrivalThreshold = 0.005; // m above the dry reading, as for the record
+constexpr double kH3Arrival = 0.190;        // s, MARIN record
+constexpr double kH2Arrival = 0.3535;       // s, MARIN record
+constexpr double kH4At0200 = 0.511;         // m, MARIN record at t = 0.200 s
+constexpr double kH4At0450 = 0.443;         // m, MARIN record at t = 0.450 s
 
 struct MarinRun {
     std::unique_ptr<app::Simulation> sim;
@@ -80,8 +80,8 @@ TEST(DamBreakMarin3D, SurgeTravelTimeBetweenGauges) {
     ASSERT_GT(r.h3_arrival, 0) << "the surge never reached H3";
     ASSERT_GT(r.h2_arrival, 0) << "the surge never reached H2";
     const double travel = r.h2_arrival - r.h3_arrival, ref = kH2Arrival - kH3Arrival;
-    std::cout << fmt::format("H3 -> H2 travel {:.4f} s, record {:.4f} s ({:+.1f} %)\n", travel,
-                             ref, 100 * (travel - ref) / ref);
+    std::cout << fmt::format("H3 -> H2 travel {:.4f} s, record {:.4f} s ({:+.1f} %)\n", travel, ref,
+                             100 * (travel - ref) / ref);
     EXPECT_NEAR(travel, ref, 0.15 * ref);
 }
 
@@ -92,8 +92,8 @@ TEST(DamBreakMarin3D, ReservoirDrainRate) {
     const auto& h4 = r.sim->probe("H4");
     const double rate = (elevation_at(h4, 0.2) - elevation_at(h4, 0.45)) / 0.25;
     const double ref = (kH4At0200 - kH4At0450) / 0.25;
-    std::cout << fmt::format("H4 drain rate {:.4f} m/s, record {:.4f} m/s ({:+.1f} %)\n", rate,
-                             ref, 100 * (rate - ref) / ref);
+    std::cout << fmt::format("H4 drain rate {:.4f} m/s, record {:.4f} m/s ({:+.1f} %)\n", rate, ref,
+                             100 * (rate - ref) / ref);
     EXPECT_NEAR(rate, ref, 0.10 * ref);
 }
 

@@ -1,4 +1,5 @@
 #include "debrisflow/dem/critical_dt.hpp"
+#include "debrisflow/dem/contact_time.hpp"
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -128,16 +129,12 @@ time::DtLimit critical_dt(const GrainSet& grains, const std::vector<int>& wall_m
                     consider(safety * tc_normal / rolling_ratio,
                              fmt::format("{} x rolling {} ({})", safety, what, pair));
             };
+            const Real tc = contact_time(p, meff, reff, vref);
             if (p.law == LawId::linear) {
-                // Contact duration of the damped linear oscillator: pi / (w0 sqrt(1 - zeta^2)).
-                const Real w0 = std::sqrt(p.kn / meff);
-                const Real tc = pi / (w0 * std::sqrt(1 - p.damping * p.damping));
                 consider(safety * tc, fmt::format("{} x linear contact time ({})", safety, pair));
-                other_modes(pi / w0, p.kt / p.kn, "contact time");
+                other_modes(undamped_contact_time(p, meff, reff, vref), p.kt / p.kn,
+                            "contact time");
             } else {
-                // Hertz contact time 2.868 (m*^2 / (E*^2 R* v))^(1/5) (Johnson 1985).
-                const Real tc =
-                    2.868 * std::pow(meff * meff / (p.e_star * p.e_star * reff * vref), Real(0.2));
                 consider(safety * tc, fmt::format("{} x Hertz contact time at {:.3g} m/s ({})",
                                                   safety, vref, pair));
                 // Mindlin k_t = 8 G* sqrt(R* d) against the normal tangent 2 E* sqrt(R* d);

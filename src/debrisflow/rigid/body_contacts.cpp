@@ -1,4 +1,5 @@
 #include "debrisflow/rigid/body_contacts.hpp"
+#include "debrisflow/dem/contact_time.hpp"
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -32,13 +33,6 @@ bool vertex_over_triangle(const dem::WallPrimitive& w, Vec3 p, Real reach, Real&
     const Vec3 foot = p - along_n * w.n;
     const Vec3 q = dem::closest_on_triangle(foot, w.a, w.b, w.c);
     return dot(q - foot, q - foot) <= Real(1e-18) + Real(1e-12) * reach * reach;
-}
-
-// Duration of a Hertz impact at approach speed v (Johnson 1985, eq. 11.24):
-// t_c = 2.87 (m*^2 / (R* E*^2 v))^(1/5); of a linear spring: pi sqrt(m*/k_n).
-Real impact_duration(const dem::PairParams& p, Real r_eff, Real m_eff, Real v) {
-    if (p.law == dem::LawId::linear) return Real(3.14159265358979) * std::sqrt(m_eff / p.kn);
-    return Real(2.87) * std::pow(m_eff * m_eff / (r_eff * p.e_star * p.e_star * v), Real(0.2));
 }
 
 // A face of a solid lying on another (active) solid of the structure is no way in or out.
@@ -204,9 +198,10 @@ Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<Bo
                             const int wm =
                                 wl[w.wall].material >= 0 ? wl[w.wall].material : b.material;
                             const Real r_eff = vertex ? b.contact_radius : sp.radius;
-                            imminent_dt_ = std::min(
-                                imminent_dt_, Real(0.1) * impact_duration(pair(b.material, wm),
-                                                                          r_eff, b.mass, vn));
+                            imminent_dt_ =
+                                std::min(imminent_dt_,
+                                         Real(0.1) * dem::undamped_contact_time(
+                                                         pair(b.material, wm), b.mass, r_eff, vn));
                         }
                         continue;
                     }
@@ -319,9 +314,9 @@ Real BodyContacts::compute(const std::vector<BodyState>& s, const std::vector<Bo
                                                            : A.mass;
                                     imminent_dt_ = std::min(
                                         imminent_dt_,
-                                        Real(0.1) * impact_duration(pair(A.material, B.material),
-                                                                    a.r * b.r / (a.r + b.r), m_eff,
-                                                                    vn));
+                                        Real(0.1) * dem::undamped_contact_time(
+                                                        pair(A.material, B.material), m_eff,
+                                                        a.r * b.r / (a.r + b.r), vn));
                                 }
                                 continue;
                             }

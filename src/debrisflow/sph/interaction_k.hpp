@@ -22,13 +22,13 @@ template <class Kernel, class Viscosity, class Diffusion> struct PairTerms {
     Kernel kernel;
     Viscosity visc;
     Diffusion diff;
-    const Real* prho;  // p / rho^2 per particle
-    const Real* cs;    // sound speed per particle
-    const Real* vol;   // m / rho per particle
-    const Real* tau;   // SPS stress / rho^2, 6 per particle (xx, xy, xz, yy, yz, zz), or nullptr:
-                       // the stress of the previous force evaluation (see sps_tau below)
-    Real half_dp;      // dp / 2: smallest fluid-wall distance used in the no-slip extrapolation
-    Real eta2;         // 0.01 h^2, regulariser of 1 / r^2 (Monaghan 1992)
+    const Real* prho; // p / rho^2 per particle
+    const Real* cs;   // sound speed per particle
+    const Real* vol;  // m / rho per particle
+    const Real* tau;  // SPS stress / rho^2, 6 per particle (xx, xy, xz, yy, yz, zz), or nullptr:
+                      // the stress of the previous force evaluation (see sps_tau below)
+    Real half_dp;     // dp / 2: smallest fluid-wall distance used in the no-slip extrapolation
+    Real eta2;        // 0.01 h^2, regulariser of 1 / r^2 (Monaghan 1992)
 
     // a_i += m_j g, a_j -= m_i g; drho_i += m_j cont + d.i, drho_j += m_i cont + d.j;
     // grad_w = grad_i W_ij (the velocity gradient of the SPS stress sums over it).
