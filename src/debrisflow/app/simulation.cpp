@@ -28,9 +28,8 @@ Simulation::Simulation(io::CaseSpec spec)
     if (!spec_.fluids.empty()) {
         first_body_particle = scenario::build_particles(spec_, set_, bodies);
         if (fem_) {
-            const int layers = spec_.fem.layers > 0
-                                   ? spec_.fem.layers
-                                   : int(std::ceil(2 * spec_.sph.h / spec_.dp - 1e-9));
+            const int layers =
+                spec_.fem.layers > 0 ? spec_.fem.layers : sph::kernel_layers(spec_.sph.h, spec_.dp);
             sph_fem_ = std::make_unique<coupling::SphFemCoupling>(*fem_, set_, spec_.dp, layers,
                                                                   spec_.sph.rho0, spec_.dim);
             fem_->add_load_source([this](std::vector<Vec3>& f) {

@@ -1,6 +1,7 @@
 #include "debrisflow/coupling/sph_fem.hpp"
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/exec/parallel.hpp"
+#include "debrisflow/sph/sph_params.hpp"
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
@@ -23,7 +24,7 @@ struct Box {
 SphFemCoupling::SphFemCoupling(fem::FemSolver& fem, particles::ParticleSet& set, Real dp,
                                int layers, Real rho, int dim)
     : fem_(fem), set_(set), dim_(dim), thickness_(layers * dp), rho_(rho),
-      mass_(rho * std::pow(dp, Real(dim))) {
+      mass_(rho * sph::lattice_volume(dp, dim)) {
     facets_ = fem::boundary_facets(fem);
     const auto& X = fem.reference();
     // Element bounding boxes (reference configuration).

@@ -58,15 +58,15 @@ Real combine_spring(Real a, Real b) {
     return 2 * a * b / (a + b);
 }
 
-Real compliance(const Material& m) {
-    return m.rigid ? 0 : (1 - m.poisson * m.poisson) / m.youngs_modulus;
-}
-
 Real shear_compliance(const Material& m) {
     return m.rigid ? 0 : 2 * (2 - m.poisson) * (1 + m.poisson) / m.youngs_modulus;
 }
 
 } // namespace
+
+Real hertz_compliance(const Material& m) {
+    return m.rigid ? 0 : (1 - m.poisson * m.poisson) / m.youngs_modulus;
+}
 
 std::vector<PairParams> build_pair_table(const std::vector<Material>& mats,
                                          const std::vector<PairOverride>& overrides,
@@ -93,7 +93,7 @@ std::vector<PairParams> build_pair_table(const std::vector<Material>& mats,
                                                  : 0.5 * (a.rolling_friction + b.rolling_friction);
             p.kn = o && o->kn ? *o->kn : combine_spring(a.kn, b.kn);
             p.kt = o && o->kt ? *o->kt : combine_spring(a.kt, b.kt);
-            const Real ce = compliance(a) + compliance(b),
+            const Real ce = hertz_compliance(a) + hertz_compliance(b),
                        cg = shear_compliance(a) + shear_compliance(b);
             p.e_star = ce > 0 ? 1 / ce : 0;
             p.g_star = cg > 0 ? 1 / cg : 0;

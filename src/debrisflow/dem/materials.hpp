@@ -41,6 +41,10 @@ inline constexpr Real hertz_min_restitution = 0.01;
 // Restitution of that oscillator for a given alpha (the forward map used by tsuji_alpha).
 Real tsuji_restitution(Real alpha);
 
+// Hertz compliance (1 - nu^2) / E of one side of a contact (0 for a rigid material):
+// 1/E* = the sum over both sides (Johnson 1985, eq. 4.22).
+Real hertz_compliance(const Material& m);
+
 // Pair table over all materials: law and parameters of every (i, j) pair. Defaults: the law
 // of the grain side (the first of the pair when both are grains: both must agree), linear
 // springs as series springs 2 k_i k_j/(k_i + k_j), other coefficients the mean of the two;

@@ -1,5 +1,6 @@
 #include "debrisflow/flow/fluid_inlet.hpp"
 #include "debrisflow/io/flow_reader.hpp"
+#include "debrisflow/sph/sph_params.hpp"
 #include <cmath>
 
 namespace debrisflow::flow {
@@ -26,7 +27,7 @@ void FluidInlet::add_layer(particles::ParticleSet& set, Real along, Real t) {
     vel[a] = spec_.sign * u;
     auto count = [&](int k) { return int(std::floor((spec_.max[k] - spec_.min[k]) / dp_ + 1e-9)); };
     const int n0 = count(perp[0]), n1 = np > 1 ? count(perp[1]) : 1;
-    const Real cell = dim_ == 3 ? dp_ * dp_ * dp_ : dp_ * dp_;
+    const Real cell = sph::lattice_volume(dp_, dim_);
     for (int i = 0; i < n0; ++i)
         for (int j = 0; j < n1; ++j) {
             Vec3 x{};

@@ -4,6 +4,7 @@
 #include "debrisflow/rigid/quaternion_k.hpp"
 #include "debrisflow/scenario/body_geometry.hpp"
 #include "debrisflow/scenario/build_grains.hpp"
+#include "debrisflow/sph/sph_params.hpp"
 #include <cmath>
 #include <fmt/format.h>
 
@@ -49,8 +50,7 @@ Real sphericity(const scenario::TriangleMesh& mesh) {
 RockFeed::RockFeed(const io::FeedSpec& spec, const io::CaseSpec& c)
     : SolidFeed(spec, c), material_(scenario::material_index(c, spec.material)),
       density_(c.dem.materials[std::size_t(material_)].density),
-      layers_(spec.layers > 0 ? spec.layers
-                              : int(std::ceil(2 * c.sph.h / (c.dp > 0 ? c.dp : 1) - 1e-9))),
+      layers_(spec.layers > 0 ? spec.layers : sph::kernel_layers(c.sph.h, c.dp)),
       sph_dp_(c.fluids.empty() ? 0 : c.dp) {
     for (const auto& file : spec.rocks) {
         const auto raw = scenario::TriangleMesh::read_stl(file, 1, {});
@@ -163,7 +163,7 @@ void RockFeed::apply(rigid::BodySolver& bodies, const dem::GrainSet* grains,
             built.state.material = material_;
             std::vector<rigid::ShellPoint> shell;
             for (const auto& sp : built.sph_points) shell.push_back({sp.p, sp.n, sp.depth});
-            const Real m_particle = case_.sph.rho0 * std::pow(case_.dp, Real(case_.dim));
+            const Real m_particle = case_.sph.rho0 * sph::lattice_volume(case_.dp, case_.dim);
             mass = built.state.mass;
             bodies.add_body(built.state, std::move(built.model), shell, case_.sph.rho0, m_particle);
             placed = true;

@@ -471,7 +471,6 @@ CaseSpec read_case_text(const std::string& text, const std::string& path,
     if (c.fluids.empty() && !c.has_dem && !c.has_bodies() && !c.has_fem())
         root.fail("fluid", "a case needs [[fluid]], [[grains]], [[body]] or [[solid]] blocks");
 
-    const Real support = 2 * c.sph.h;
     for (const auto& t : root.tables("wall")) {
         WallSpec w;
         w.origin = t.origin();
@@ -491,7 +490,7 @@ CaseSpec read_case_text(const std::string& text, const std::string& path,
             w.shape = read_shape(t, c.dim, {"box", "open_tank", "channel", "stl"});
         }
         if (!c.fluids.empty()) {
-            w.layers = int(t.integer("layers", long(std::ceil(support / c.dp - 1e-9)), 1,
+            w.layers = int(t.integer("layers", long(sph::kernel_layers(c.sph.h, c.dp)), 1,
                                      max_boundary_layers));
         }
         if (c.has_dem || c.has_bodies()) {

@@ -85,8 +85,8 @@ BodySpec read_body(const ConfigTable& t, const CaseSpec& c) {
     b.contact_radius = t.real("contact_radius", 0);
     if (b.contact_radius < 0) t.fail("contact_radius", "must be >= 0");
     if (!c.fluids.empty()) {
-        b.layers = int(t.integer("layers", long(std::ceil(2 * c.sph.h / c.dp - 1e-9)), 1,
-                                 max_boundary_layers));
+        b.layers = int(
+            t.integer("layers", long(sph::kernel_layers(c.sph.h, c.dp)), 1, max_boundary_layers));
     }
     t.finish();
     return b;

@@ -186,7 +186,6 @@ Vec3 flume_gravity(const ConfigTable& root, Vec3 gravity) {
 }
 
 void read_structures(const ConfigTable& root, CaseSpec& c) {
-    const Real support = 2 * c.sph.h;
     const bool fluid = !c.fluids.empty();
     long boxes_so_far = 0;
     for (const auto& t : root.tables("structure")) {
@@ -200,7 +199,7 @@ void read_structures(const ConfigTable& root, CaseSpec& c) {
         w.structure =
             t.choice("type", {"flume", "check_dam", "slit_dam", "baffles", "gate", "hopper"});
         if (fluid) {
-            w.layers = int(t.integer("layers", long(std::ceil(support / c.dp - 1e-9)), 1,
+            w.layers = int(t.integer("layers", long(sph::kernel_layers(c.sph.h, c.dp)), 1,
                                      max_boundary_layers));
         }
         // Plate thickness of flume beds, side walls and hoppers: covers the kernel support

@@ -1,4 +1,5 @@
 #include "debrisflow/probes/design_formulas.hpp"
+#include "debrisflow/dem/materials.hpp"
 #include <algorithm>
 #include <cmath>
 
@@ -77,15 +78,12 @@ std::vector<DesignCheck> design_checks(const io::CaseSpec& c,
                         if (c.dem.materials[k].name == w.material) wm = int(k);
             const auto& mb = c.dem.materials[std::size_t(b->material)];
             const auto& mw = c.dem.materials[std::size_t(wm >= 0 ? wm : b->material)];
-            auto compliance = [](const dem::Material& m) {
-                return m.rigid ? Real(0) : (1 - m.poisson * m.poisson) / m.youngs_modulus;
-            };
             if (c.dim == 2) {
                 d.note += "Hertz boulder load: 3D only (a 2D disc makes a line contact); ";
             } else if (!(mb.youngs_modulus > 0)) {
                 d.note += "the boulder's material has no Young's modulus; ";
             } else {
-                d.e_star = 1 / (compliance(mb) + compliance(mw));
+                d.e_star = 1 / (dem::hertz_compliance(mb) + dem::hertz_compliance(mw));
                 d.mass = b->mass;
                 d.radius =
                     c.dim == 3 ? std::cbrt(3 * b->volume / (4 * pi)) : std::sqrt(b->volume / pi);

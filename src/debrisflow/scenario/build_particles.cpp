@@ -4,6 +4,7 @@
 #include "debrisflow/models/eos_tait_k.hpp"
 #include "debrisflow/scenario/lattice.hpp"
 #include "debrisflow/scenario/stl_mesh.hpp"
+#include "debrisflow/sph/sph_params.hpp"
 #include <cmath>
 #include <fmt/format.h>
 #include <functional>
@@ -239,7 +240,7 @@ ParticleId build_particles(const io::CaseSpec& c, particles::ParticleSet& set,
     // A particle's mass is its initial density times its lattice volume dp^dim (2D: per metre
     // of thickness), so that SPH volumes m/rho match the lattice where the column starts
     // compressed by its own weight.
-    const Real volume = std::pow(c.dp, c.dim);
+    const Real volume = sph::lattice_volume(c.dp, c.dim);
     const models::TaitEos eos(sph.rho0, sph.c0, sph.gamma);
     std::vector<Vec3> boundary;
     std::vector<std::vector<WallPoint>> walls;

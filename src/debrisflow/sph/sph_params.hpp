@@ -1,6 +1,7 @@
 #pragma once
 #include "debrisflow/core/vec3_k.hpp"
 #include <array>
+#include <cmath>
 #include <string>
 
 namespace debrisflow::sph {
@@ -41,5 +42,17 @@ struct SphParams {
     // from the fluid at a ghost node, English et al. 2022; particles with wall geometry).
     std::string boundary = "dbc";
 };
+
+// Volume a particle of the lattice stands for, dp^dim (2D: per metre of thickness); a
+// particle's mass is a density times it.
+inline Real lattice_volume(Real dp, int dim) {
+    return std::pow(dp, Real(dim));
+}
+
+// Layers of boundary particles that cover the kernel support 2h of a fluid at spacing dp
+// (the default of every wall, structure, body shell and FEM surface); 1 without a fluid.
+inline int kernel_layers(Real h, Real dp) {
+    return dp > 0 ? int(std::ceil(2 * h / dp - Real(1e-9))) : 1;
+}
 
 } // namespace debrisflow::sph
