@@ -105,7 +105,8 @@ TEST(CaseReader, SlurryOpenBoundaryAndStructureErrorsNameTheKey) {
     const auto c = test::case_from_toml("bingham", minimal,
                                         {"sph.viscosity=\"bingham\"", "sph.consistency=2",
                                          "sph.yield_stress=10", "sph.regularization=100"});
-    EXPECT_DOUBLE_EQ(c.sph.rheology.mu_max, 2 + 10 * 100); // mu_p + tau_y m
+    EXPECT_DOUBLE_EQ(std::get<models::BinghamViscosity>(c.sph.viscosity_model).mu_max,
+                     2 + 10 * 100); // mu_p + tau_y m
     // An inlet buffer shorter than the kernel support; a hydrograph with a missing value.
     e = error_of(std::string(minimal) + R"(
 [[inlet]]

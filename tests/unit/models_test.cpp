@@ -19,7 +19,7 @@ TEST(TaitEos, PressureSoundSpeedAndInverse) {
 TEST(Registries, NamesAndChoices) {
     EXPECT_EQ(sph::ViscosityRegistry::names(),
               (std::vector<std::string>{"artificial", "laminar", "laminar_sps", "bingham",
-                                        "herschel_bulkley", "mu_i"}));
+                                        "herschel_bulkley", "mu_i", "carreau_yasuda"}));
     EXPECT_EQ(sph::DiffusionRegistry::names(),
               (std::vector<std::string>{"none", "molteni", "fourtakas"}));
     EXPECT_TRUE(sph::DiffusionRegistry::has("fourtakas"));

@@ -57,34 +57,6 @@ ShapeSpec read_shape(const ConfigTable& t, int dim, const std::vector<std::strin
 namespace {
 
 // Slurry rheology keys of [sph] (bingham, herschel_bulkley, mu_i); nu is the Newtonian base.
-void read_rheology(const ConfigTable& t, sph::SphParams& p) {
-    auto& r = p.rheology;
-    if (p.viscosity == "mu_i") {
-        r.mu_s = t.positive("mu_s", 0.38);
-        r.mu_2 = t.positive("mu_2", 0.64);
-        if (r.mu_2 < r.mu_s) t.fail("mu_2", "must be >= mu_s");
-        r.i0 = t.positive("I0", 0.279);
-        r.grain_diameter = t.positive("grain_diameter");
-        r.grain_density = t.positive("grain_density");
-        r.mu_max = t.positive("mu_max");
-        return;
-    }
-    r.yield_stress = t.real("yield_stress");
-    if (r.yield_stress < 0) t.fail("yield_stress", "must be >= 0 [Pa]");
-    r.consistency = t.positive("consistency");
-    r.flow_index = p.viscosity == "bingham" ? 1 : t.positive("flow_index");
-    if (p.viscosity == "bingham" && t.has("flow_index"))
-        t.fail("flow_index", "a Bingham fluid has n = 1; use viscosity = \"herschel_bulkley\"");
-    r.regularization = t.positive("regularization");
-    // With n >= 1 the apparent viscosity is largest at rest: mu_p + tau_y m (+ the base).
-    const Real natural =
-        r.flow_index >= 1 ? p.rho0 * p.nu + r.consistency + r.yield_stress * r.regularization : 0;
-    if (natural > 0)
-        r.mu_max = t.positive("mu_max", natural);
-    else
-        r.mu_max = t.positive("mu_max"); // n < 1: K gdot^(n-1) is unbounded at rest
-}
-
 void read_sph(const ConfigTable& t, CaseSpec& c) {
     auto& p = c.sph;
     p.dim = c.dim;
@@ -109,20 +81,24 @@ void read_sph(const ConfigTable& t, CaseSpec& c) {
         if (!(p.c0 > 0)) t.fail("c0_coefficient", "gravity is zero; give c0 directly");
     }
     p.viscosity = t.choice("viscosity", sph::ViscosityRegistry::names(), "artificial");
-    // Read for every model so that sweeps may switch models with --set.
-    p.alpha = t.real("alpha", 0.01);
-    if (p.alpha < 0) t.fail("alpha", "must be >= 0");
-    p.boundary_factor = t.real("boundary_factor", 1);
-    if (p.boundary_factor < 0) t.fail("boundary_factor", "must be >= 0");
-    const bool slurry =
-        p.viscosity == "bingham" || p.viscosity == "herschel_bulkley" || p.viscosity == "mu_i";
-    if (p.viscosity != "artificial" && !slurry)
-        p.nu = t.positive("nu");
-    else if (t.has("nu"))
-        p.nu = t.positive("nu");
-    else
-        p.nu = 0;
-    if (slurry) read_rheology(t, p);
+    // alpha and boundary_factor are read for every model, so that sweeps may switch models
+    // with --set; each model reads its own keys in its from_config.
+    models::ViscosityContext ctx;
+    ctx.rho0 = p.rho0;
+    ctx.h = p.h;
+    ctx.alpha = t.real("alpha", 0.01);
+    if (ctx.alpha < 0) t.fail("alpha", "must be >= 0");
+    ctx.boundary_factor = t.real("boundary_factor", 1);
+    if (ctx.boundary_factor < 0) t.fail("boundary_factor", "must be >= 0");
+    p.viscosity_model =
+        sph::ViscosityRegistry::visit_name(p.viscosity, [&]<class V>() -> sph::Viscosity {
+            if (V::requires_nu)
+                p.nu = t.positive("nu");
+            else
+                p.nu = t.has("nu") ? t.positive("nu") : 0;
+            ctx.nu = p.nu;
+            return V::from_config(t, ctx);
+        });
     p.diffusion = t.choice("diffusion", sph::DiffusionRegistry::names(), "fourtakas");
     p.delta = t.real("delta", 0.1); // read for every model so sweeps may switch models
     if (p.delta < 0 || p.delta > 1) t.fail("delta", "must be within [0, 1]");

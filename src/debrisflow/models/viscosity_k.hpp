@@ -1,12 +1,15 @@
 #pragma once
 #include "debrisflow/core/hd.hpp"
+#include "debrisflow/models/viscosity_context.hpp"
 #include "debrisflow/sph/pair_state_k.hpp"
 
 namespace debrisflow::models {
 
 using sph::PairState;
 
-// Every model returns G_ij with a_i += m_j G_ij and a_j -= m_i G_ij (momentum-conserving).
+// Every model returns G_ij with a_i += m_j G_ij and a_j -= m_i G_ij (momentum-conserving),
+// and builds itself from the [sph] table with from_config(table, ViscosityContext): its own
+// keys, defaults and checks (`requires_nu`: the case must give the fluid's nu).
 
 // Artificial viscosity (Monaghan 1992, eq. 4.1): Pi_ij = -alpha cbar mu_ij / rhobar for
 // v_ij.r_ij < 0, mu_ij = h v_ij.r_ij / (r^2 + 0.01 h^2); a_i -= sum m_j Pi_ij grad W.
@@ -16,7 +19,13 @@ struct ArtificialViscosity {
     static constexpr bool needs_velocity_gradient = false;
     static constexpr bool needs_apparent_viscosity = false;
     static constexpr bool no_slip_walls = false; // uses v_ij as is
+    static constexpr bool requires_nu = false;
     Real alpha = 0.01, boundary_factor = 1, h = 0;
+
+    template <class Table>
+    static ArtificialViscosity from_config(const Table&, const ViscosityContext& c) {
+        return {c.alpha, c.boundary_factor, c.h};
+    }
 
     DF_HD Vec3 acceleration(const PairState& s) const {
         const Real vr = dot(s.v, s.r);
@@ -37,7 +46,13 @@ struct LaminarViscosity {
     static constexpr bool needs_velocity_gradient = false;
     static constexpr bool needs_apparent_viscosity = false;
     static constexpr bool no_slip_walls = true; // uses v_visc (Morris wall extrapolation)
+    static constexpr bool requires_nu = true;
     Real nu = 1e-6, rho0 = 1000, eta2 = 0;
+
+    template <class Table>
+    static LaminarViscosity from_config(const Table&, const ViscosityContext& c) {
+        return {c.nu, c.rho0, c.morris_eta2()};
+    }
 
     DF_HD Vec3 acceleration(const PairState& s) const {
         const Real mu2 = 2 * rho0 * nu;
@@ -56,8 +71,18 @@ struct LaminarSpsViscosity {
     static constexpr bool needs_velocity_gradient = true;
     static constexpr bool needs_apparent_viscosity = false;
     static constexpr bool no_slip_walls = true;
+    static constexpr bool requires_nu = true;
     Real nu = 1e-6, rho0 = 1000, eta2 = 0;
     Real smagorinsky = 0.12, blin = 0.0066; // C_s and C_I of Dalrymple & Rogers
+
+    template <class Table>
+    static LaminarSpsViscosity from_config(const Table&, const ViscosityContext& c) {
+        LaminarSpsViscosity v;
+        v.nu = c.nu;
+        v.rho0 = c.rho0;
+        v.eta2 = c.morris_eta2();
+        return v;
+    }
 
     DF_HD Vec3 acceleration(const PairState& s) const {
         return LaminarViscosity{nu, rho0, eta2}.acceleration(s);

@@ -1,19 +1,14 @@
 #pragma once
 #include "debrisflow/kernels/kernel.hpp"
 #include "debrisflow/models/density_diffusion_k.hpp"
-#include "debrisflow/models/rheology_k.hpp"
-#include "debrisflow/models/viscosity_k.hpp"
 #include "debrisflow/sph/sph_params.hpp"
 
 namespace debrisflow::sph {
 
-// Model families of the WCSPH solver, each selectable by name in the case file.
-using ViscosityRegistry = models::Registry<models::ArtificialViscosity, models::LaminarViscosity,
-                                           models::LaminarSpsViscosity, models::BinghamViscosity,
-                                           models::HerschelBulkleyViscosity, models::MuIViscosity>;
+// Model families of the WCSPH solver, each selectable by name in the case file (viscosity:
+// sph/viscosity_registry.hpp).
 using DiffusionRegistry =
     models::Registry<models::NoDiffusion, models::MolteniColagrossi, models::Fourtakas>;
-using Viscosity = ViscosityRegistry::Variant;
 using Diffusion = DiffusionRegistry::Variant;
 
 // The concrete models for a parameter set (names are validated when the case is read).

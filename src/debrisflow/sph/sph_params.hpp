@@ -1,5 +1,6 @@
 #pragma once
 #include "debrisflow/core/vec3_k.hpp"
+#include "debrisflow/sph/viscosity_registry.hpp"
 #include <array>
 #include <cmath>
 #include <string>
@@ -15,20 +16,9 @@ struct SphParams {
     Real rho0 = 1000;
     Real c0 = 0;
     Real gamma = 7;
-    std::string viscosity = "artificial";
-    Real alpha = 0.01;
-    Real boundary_factor = 1;
-    Real nu = 1e-6; // laminar models; base (Newtonian) part of the slurry models
-    // Slurry rheology (viscosity = "bingham", "herschel_bulkley", "mu_i").
-    struct Rheology {
-        Real yield_stress = 0;                     // tau_y [Pa]
-        Real consistency = 0;                      // K [Pa s^n] (Bingham: plastic viscosity)
-        Real flow_index = 1;                       // n
-        Real regularization = 0;                   // Papanastasiou m [s]
-        Real mu_max = 0;                           // cap of the apparent viscosity [Pa s]
-        Real mu_s = 0.38, mu_2 = 0.64, i0 = 0.279; // mu(I) (Jop et al. 2006)
-        Real grain_diameter = 0.001, grain_density = 2500;
-    } rheology;
+    std::string viscosity = "artificial"; // the model's name
+    Viscosity viscosity_model;            // the model, built by its from_config
+    Real nu = 1e-6; // the fluid's kinematic viscosity (slurries: of the base; drag laws)
     std::string diffusion = "fourtakas";
     Real delta = 0.1;
     Vec3 gravity{0, 0, -9.81};
