@@ -5,6 +5,7 @@
 #include "debrisflow/io/dem_reader.hpp"
 #include "debrisflow/io/fem_reader.hpp"
 #include "debrisflow/io/flow_reader.hpp"
+#include "debrisflow/io/named.hpp"
 #include "debrisflow/io/rigid_reader.hpp"
 #include "debrisflow/io/structure_reader.hpp"
 #include "debrisflow/io/toml_echo.hpp"
@@ -471,11 +472,8 @@ CaseSpec read_case_text(const std::string& text, const std::string& path,
         }
         if (c.has_dem || c.has_bodies()) {
             w.material = t.string("material", "");
-            const auto& mats = c.dem.materials;
-            if (!w.material.empty() && std::none_of(mats.begin(), mats.end(), [&](const auto& m) {
-                    return m.name == w.material;
-                }))
-                t.fail("material", "no [[material]] named \"" + w.material + "\"");
+            if (!w.material.empty())
+                require_named(t, "material", c.dem.materials, w.material, "[[material]]");
             w.velocity = t.vec3("velocity", c.dim, {});
         }
         if (t.has("remove_at")) {

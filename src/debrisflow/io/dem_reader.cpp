@@ -1,6 +1,7 @@
 #include "debrisflow/io/dem_reader.hpp"
 #include "debrisflow/coupling/drag_laws_k.hpp"
 #include "debrisflow/dem/contact_laws_k.hpp"
+#include "debrisflow/io/named.hpp"
 #include <algorithm>
 #include <filesystem>
 #include <fmt/format.h>
@@ -49,9 +50,7 @@ dem::PairOverride read_contact(const ConfigTable& t, const std::vector<dem::Mate
     dem::PairOverride o;
     const auto names = t.strings("materials");
     if (names.size() != 2) t.fail("materials", "expected two material names");
-    for (const auto& n : names)
-        if (std::none_of(mats.begin(), mats.end(), [&](const auto& m) { return m.name == n; }))
-            t.fail("materials", "no [[material]] named \"" + n + "\"");
+    for (const auto& n : names) require_named(t, "materials", mats, n, "[[material]]");
     o.a = names[0];
     o.b = names[1];
     if (t.has("law")) o.law = t.choice("law", dem::ContactLawRegistry::names());
@@ -61,10 +60,7 @@ dem::PairOverride read_contact(const ConfigTable& t, const std::vector<dem::Mate
         o.restitution = t.real("restitution");
         if (!(*o.restitution > 0 && *o.restitution <= 1))
             t.fail("restitution", "must be within (0, 1]");
-        const std::string law =
-            o.law ? *o.law : std::find_if(mats.begin(), mats.end(), [&](const auto& m) {
-                                 return m.name == o.a;
-                             })->law;
+        const std::string law = o.law ? *o.law : find_named(mats, o.a)->law;
         if (law == "hertz_mindlin" && *o.restitution < dem::hertz_min_restitution)
             t.fail("restitution", fmt::format("must be within [{}, 1] for the hertz_mindlin law",
                                               dem::hertz_min_restitution));
@@ -144,10 +140,8 @@ GrainsSpec read_grains(const ConfigTable& t, const CaseSpec& c) {
     g.file_overrides = {t.has("material"), t.has("velocity"), t.has("angular_velocity"),
                         t.has("region")};
     g.material = file ? t.string("material", "") : t.string("material");
-    const auto& mats = c.dem.materials;
-    if ((!file || !g.material.empty()) &&
-        std::none_of(mats.begin(), mats.end(), [&](const auto& m) { return m.name == g.material; }))
-        t.fail("material", "no [[material]] named \"" + g.material + "\"");
+    if (!file || !g.material.empty())
+        require_named(t, "material", c.dem.materials, g.material, "[[material]]");
     g.velocity = t.vec3("velocity", c.dim, {});
     g.angular_velocity = t.vec3("angular_velocity", 3, {});
     if (t.has("clump")) {
@@ -206,9 +200,7 @@ FeedSpec read_feed(const ConfigTable& t, const CaseSpec& c) {
     f.origin = t.origin();
     f.name = t.name("name");
     f.material = t.string("material");
-    const auto& mats = c.dem.materials;
-    if (std::none_of(mats.begin(), mats.end(), [&](const auto& m) { return m.name == f.material; }))
-        t.fail("material", "no [[material]] named \"" + f.material + "\"");
+    require_named(t, "material", c.dem.materials, f.material, "[[material]]");
     f.size = read_size(t);
     check_size_range(t, f.size, c);
     f.min = t.vec3("min", c.dim);

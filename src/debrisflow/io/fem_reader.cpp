@@ -1,4 +1,5 @@
 #include "debrisflow/io/fem_reader.hpp"
+#include "debrisflow/io/named.hpp"
 #include <algorithm>
 #include <filesystem>
 #include <fmt/format.h>
@@ -44,9 +45,7 @@ FemSolidSpec read_solid(const ConfigTable& t, const CaseSpec& c) {
     s.origin = t.origin();
     s.name = t.name("name");
     s.material = t.string("material");
-    const auto& mats = c.fem.materials;
-    if (std::none_of(mats.begin(), mats.end(), [&](const auto& m) { return m.name == s.material; }))
-        t.fail("material", "no [[fem_material]] named \"" + s.material + "\"");
+    require_named(t, "material", c.fem.materials, s.material, "[[fem_material]]");
     s.element = c.dim == 2 ? t.choice("element", {"quad4"}, "quad4")
                            : t.choice("element", {"hex8", "tet4", "tet10"}, "hex8");
     s.mesh = t.choice("mesh", {"box", "trapezoid", "gmsh"}, "box");
@@ -76,10 +75,7 @@ FemSolidSpec read_solid(const ConfigTable& t, const CaseSpec& c) {
     if (t.has("fixed")) s.fixed = t.strings("fixed");
     if (t.has("dem_material")) {
         s.dem_material = t.string("dem_material");
-        const auto& dm = c.dem.materials;
-        if (std::none_of(dm.begin(), dm.end(),
-                         [&](const auto& m) { return m.name == s.dem_material; }))
-            t.fail("dem_material", "no DEM [[material]] named \"" + s.dem_material + "\"");
+        require_named(t, "dem_material", c.dem.materials, s.dem_material, "DEM [[material]]");
     }
     t.finish();
     return s;

@@ -1,5 +1,6 @@
 #include "debrisflow/io/rigid_reader.hpp"
 #include "debrisflow/io/dem_reader.hpp"
+#include "debrisflow/io/named.hpp"
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -27,10 +28,8 @@ BodySpec read_body(const ConfigTable& t, const CaseSpec& c) {
     b.origin = t.origin();
     b.name = t.name("name");
     b.material = t.string("material");
-    const auto& mats = c.dem.materials;
-    auto mat =
-        std::find_if(mats.begin(), mats.end(), [&](const auto& m) { return m.name == b.material; });
-    if (mat == mats.end()) t.fail("material", "no [[material]] named \"" + b.material + "\"");
+    require_named(t, "material", c.dem.materials, b.material, "[[material]]");
+    const dem::Material* mat = find_named(c.dem.materials, b.material);
     const std::string type = t.choice("shape", {"box", "sphere", "cylinder", "stl", "clump"});
     if (type == "sphere") {
         b.shape.type = "sphere";

@@ -1,5 +1,6 @@
 #include "debrisflow/io/structure_reader.hpp"
 #include "debrisflow/io/box_extent.hpp"
+#include "debrisflow/io/named.hpp"
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -227,11 +228,8 @@ void read_structures(const ConfigTable& root, CaseSpec& c) {
         }
         if (c.has_dem || c.has_bodies()) {
             w.material = t.string("material", "");
-            const auto& mats = c.dem.materials;
-            if (!w.material.empty() && std::none_of(mats.begin(), mats.end(), [&](const auto& m) {
-                    return m.name == w.material;
-                }))
-                t.fail("material", "no [[material]] named \"" + w.material + "\"");
+            if (!w.material.empty())
+                require_named(t, "material", c.dem.materials, w.material, "[[material]]");
         }
         boxes_so_far += long(w.boxes.size());
         if (boxes_so_far > max_structure_boxes)

@@ -1,5 +1,6 @@
 #include "debrisflow/probes/design_formulas.hpp"
 #include "debrisflow/dem/materials.hpp"
+#include "debrisflow/io/named.hpp"
 #include <algorithm>
 #include <cmath>
 
@@ -71,11 +72,10 @@ std::vector<DesignCheck> design_checks(const io::CaseSpec& c,
                     std::max(d.v_impact, std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
             }
             // Wall material: the wall's own, or the body's (as the contact laws default).
-            int wm = -1;
-            for (const auto& w : c.walls)
-                if (w.name == spec.wall && !w.material.empty())
-                    for (std::size_t k = 0; k < c.dem.materials.size(); ++k)
-                        if (c.dem.materials[k].name == w.material) wm = int(k);
+            const io::WallSpec* wall = io::find_named(c.walls, spec.wall);
+            const int wm = wall && !wall->material.empty()
+                               ? io::index_named(c.dem.materials, wall->material)
+                               : -1;
             const auto& mb = c.dem.materials[std::size_t(b->material)];
             const auto& mw = c.dem.materials[std::size_t(wm >= 0 ? wm : b->material)];
             if (c.dim == 2) {

@@ -1,5 +1,6 @@
 #include "debrisflow/scenario/build_fem.hpp"
 #include "debrisflow/core/error.hpp"
+#include "debrisflow/io/named.hpp"
 #include <algorithm>
 #include <fmt/format.h>
 
@@ -48,11 +49,9 @@ std::unique_ptr<fem::FemSolver> make_fem_solver(const io::CaseSpec& c) {
         p.max_subcycles = 1;
     auto solver = std::make_unique<fem::FemSolver>(p, c.fem.materials);
     for (const auto& s : c.fem.solids) {
-        const auto it = std::find_if(c.fem.materials.begin(), c.fem.materials.end(),
-                                     [&](const auto& m) { return m.name == s.material; });
         const fem::FemMesh mesh = build_fem_mesh(s, c);
         try {
-            solver->add_solid(s.name, mesh, int(it - c.fem.materials.begin()));
+            solver->add_solid(s.name, mesh, io::index_named(c.fem.materials, s.material));
             for (const auto& f : s.fixed)
                 solver->fix(solver->node_set(s.name + "." + f), {true, true, true});
         } catch (const InputError& e) {

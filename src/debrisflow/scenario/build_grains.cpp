@@ -1,6 +1,7 @@
 #include "debrisflow/scenario/build_grains.hpp"
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/dem/box_faces.hpp"
+#include "debrisflow/io/named.hpp"
 #include "debrisflow/scenario/clump_template.hpp"
 #include "debrisflow/scenario/resource_estimate.hpp"
 #include "debrisflow/scenario/size_sampler.hpp"
@@ -24,8 +25,8 @@ constexpr Real pi = 3.14159265358979323846;
 } // namespace
 
 int material_index(const io::CaseSpec& c, const std::string& name) {
-    for (std::size_t i = 0; i < c.dem.materials.size(); ++i)
-        if (c.dem.materials[i].name == name) return int(i);
+    const int i = io::index_named(c.dem.materials, name);
+    if (i >= 0) return i;
     throw InputError(c.file + ": no material named \"" + name + "\"");
 }
 

@@ -1,6 +1,7 @@
 #include "debrisflow/scenario/resource_estimate.hpp"
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/core/memory_budget.hpp"
+#include "debrisflow/io/named.hpp"
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -71,9 +72,8 @@ double median_diameter(const io::SizeSpec& s) {
 }
 
 double material_density(const io::CaseSpec& c, const std::string& name) {
-    for (const auto& m : c.dem.materials)
-        if (m.name == name && m.density > 0) return m.density;
-    return 2650;
+    const auto* m = io::find_named(c.dem.materials, name);
+    return m && m->density > 0 ? m->density : 2650;
 }
 
 // Volume delivered by a hydrograph over [0, t_end], the last value held.
