@@ -9,6 +9,7 @@
 #include "debrisflow/models/viscosity_k.hpp"
 #include "debrisflow/rigid/body_state.hpp"
 #include "debrisflow/sph/interaction_k.hpp"
+#include "debrisflow/sph/viscosity_registry.hpp"
 
 namespace debrisflow::cuda {
 
@@ -26,13 +27,17 @@ template <class K, class V, class D> void instantiate_interaction() {
     launch(0, sph::FluidInteraction<K, V, D>{});
 }
 
+// Every viscosity model of the registry (with Fourtakas diffusion), and every diffusion model
+// (with artificial viscosity): a model added to sph/viscosity_registry.hpp is compiled for the
+// device here without another line.
+template <class K, class... V> void instantiate_viscosities(models::Registry<V...>*) {
+    (instantiate_interaction<K, V, models::Fourtakas>(), ...);
+}
+
 template <class K> void instantiate_kernel() {
+    instantiate_viscosities<K>(static_cast<sph::ViscosityRegistry*>(nullptr));
     instantiate_interaction<K, models::ArtificialViscosity, models::NoDiffusion>();
     instantiate_interaction<K, models::ArtificialViscosity, models::MolteniColagrossi>();
-    instantiate_interaction<K, models::ArtificialViscosity, models::Fourtakas>();
-    instantiate_interaction<K, models::LaminarViscosity, models::NoDiffusion>();
-    instantiate_interaction<K, models::LaminarViscosity, models::Fourtakas>();
-    instantiate_interaction<K, models::LaminarSpsViscosity, models::Fourtakas>();
 }
 
 // Every grain's contacts with its candidate partners and wall primitives, as a per-grain
