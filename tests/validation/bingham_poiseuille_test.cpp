@@ -6,12 +6,12 @@
 //   u    = rho F / (2 mu_p) (a - z0)^2                            in the plug s < z0.
 // The SPH model is Papanastasiou-regularised (m = 10 s); its own exact solution differs from
 // the ideal Bingham one by z0 / m in velocity, 0.9 % of the plug speed here, inside the 3 %.
+#include "plane_channel.hpp"
 #include "run_case.hpp"
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
-#include <map>
 
 using namespace debrisflow;
 
@@ -28,59 +28,11 @@ double bingham(double z) {
 }
 
 std::string channel_case(double dp) {
-    return fmt::format(R"(
-dimensions = 2
-dp = {0}
-[time]
-end = 0.35
-[output]
-vtk = false
-[physics]
-gravity = [{1}, 0]
-[domain]
-min = [0, {2}]
-max = [{3}, {4}]
-periodic = ["x"]
-[sph]
-c0 = 0.5
-viscosity = "bingham"
-consistency = {5}
-yield_stress = {6}
-regularization = {7}
-diffusion = "none"
-[[fluid]]
-name = "slurry"
-shape = "box"
-min = [0, 0]
-max = [{3}, {8}]
-hydrostatic = false
-[[wall]]
-name = "bottom"
-shape = "plane"
-point = [0, 0]
-normal = [0, 1]
-[[wall]]
-name = "top"
-shape = "plane"
-point = [0, {8}]
-normal = [0, -1]
-)",
-                       dp, F, -5 * dp, 12 * dp, L + 5 * dp, mu_p, tau_y, m_reg, L);
-}
-
-// Mean x velocity per lattice layer (the flow is parallel, layers keep their z).
-std::vector<std::pair<double, double>> layer_profile(app::Simulation& sim, double dp) {
-    std::map<int, std::pair<double, int>> acc;
-    const auto& s = sim.particles();
-    for (Index i = 0; i < s.size(); ++i) {
-        if (s.kind[i] != 0) continue;
-        auto& e = acc[int(std::floor(s.z[i] / dp))];
-        e.first += s.vx[i];
-        e.second += 1;
-    }
-    std::vector<std::pair<double, double>> out;
-    for (auto& [k, e] : acc) out.push_back({(k + 0.5) * dp, e.first / e.second});
-    return out;
+    return test::plane_channel_case(dp, L, F, 0.35,
+                                    fmt::format("c0 = 0.5\nviscosity = \"bingham\"\n"
+                                                "consistency = {}\nyield_stress = {}\n"
+                                                "regularization = {}\ndiffusion = \"none\"",
+                                                mu_p, tau_y, m_reg));
 }
 
 // Yield surface from the measured shear-rate profile: in the sheared layers the Bingham law
@@ -113,9 +65,9 @@ TEST(BinghamPoiseuille, PlugWidthAndVelocityProfile) {
     const double dp = L / layers;
     app::Simulation sim(test::case_from_toml("bingham_poiseuille", channel_case(dp)));
     sim.run({"", true, 0, 0.25});
-    const auto early = layer_profile(sim, dp);
+    const auto early = test::layer_profile(sim, dp);
     sim.run({"", true, 0, 0.35});
-    const auto prof = layer_profile(sim, dp);
+    const auto prof = test::layer_profile(sim, dp);
     double num = 0, den = 0, change = 0, u_plug = 0;
     for (std::size_t k = 0; k < prof.size(); ++k) {
         const double ua = bingham(prof[k].first);

@@ -6,12 +6,12 @@
 // 1e-7 of the centre speed). Parameters: mu_0 = 5, mu_inf = 0.5 Pa s, lambda = 5 s,
 // n = 0.3, a = 2: the viscosity falls 6.8-fold from the centre line to the wall and the centre
 // speed is 5.6 times that of a Newtonian fluid of viscosity mu_0.
+#include "plane_channel.hpp"
 #include "run_case.hpp"
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
-#include <map>
 
 using namespace debrisflow;
 
@@ -22,8 +22,8 @@ constexpr double mu_0 = 5, mu_inf = 0.5, lambda = 5, n_index = 0.3, yasuda = 2;
 constexpr int layers = 40;
 
 double viscosity(double gdot) {
-    return mu_inf + (mu_0 - mu_inf) *
-                        std::pow(1 + std::pow(lambda * gdot, yasuda), (n_index - 1) / yasuda);
+    return mu_inf +
+           (mu_0 - mu_inf) * std::pow(1 + std::pow(lambda * gdot, yasuda), (n_index - 1) / yasuda);
 }
 
 // Shear rate where the stress mu(gdot) gdot equals tau.
@@ -60,62 +60,12 @@ struct SemiAnalytic {
 };
 
 std::string channel_case(double dp) {
-    return fmt::format(R"(
-dimensions = 2
-dp = {0}
-[time]
-end = 0.6
-[output]
-vtk = false
-[physics]
-gravity = [{1}, 0]
-[domain]
-min = [0, {2}]
-max = [{3}, {4}]
-periodic = ["x"]
-[sph]
-c0 = 1.0
-viscosity = "carreau_yasuda"
-viscosity_zero = {5}
-viscosity_infinity = {6}
-relaxation_time = {7}
-flow_index = {8}
-yasuda_a = {9}
-diffusion = "none"
-[[fluid]]
-name = "slurry"
-shape = "box"
-min = [0, 0]
-max = [{3}, {10}]
-hydrostatic = false
-[[wall]]
-name = "bottom"
-shape = "plane"
-point = [0, 0]
-normal = [0, 1]
-[[wall]]
-name = "top"
-shape = "plane"
-point = [0, {10}]
-normal = [0, -1]
-)",
-                       dp, F, -5 * dp, 12 * dp, L + 5 * dp, mu_0, mu_inf, lambda, n_index,
-                       yasuda, L);
-}
-
-// Mean x velocity per lattice layer (the flow is parallel, layers keep their z).
-std::vector<std::pair<double, double>> layer_profile(app::Simulation& sim, double dp) {
-    std::map<int, std::pair<double, int>> acc;
-    const auto& s = sim.particles();
-    for (Index i = 0; i < s.size(); ++i) {
-        if (s.kind[i] != 0) continue;
-        auto& e = acc[int(std::floor(s.z[i] / dp))];
-        e.first += s.vx[i];
-        e.second += 1;
-    }
-    std::vector<std::pair<double, double>> out;
-    for (auto& [k, e] : acc) out.push_back({(k + 0.5) * dp, e.first / e.second});
-    return out;
+    return test::plane_channel_case(
+        dp, L, F, 0.6,
+        fmt::format("c0 = 1.0\nviscosity = \"carreau_yasuda\"\nviscosity_zero = {}\n"
+                    "viscosity_infinity = {}\nrelaxation_time = {}\nflow_index = {}\n"
+                    "yasuda_a = {}\ndiffusion = \"none\"",
+                    mu_0, mu_inf, lambda, n_index, yasuda));
 }
 
 } // namespace
@@ -134,9 +84,9 @@ TEST(CarreauYasudaPoiseuille, SteadyVelocityProfile) {
     const SemiAnalytic exact(4000);
     app::Simulation sim(test::case_from_toml("carreau_yasuda_poiseuille", channel_case(dp)));
     sim.run({"", true, 0, 0.45});
-    const auto early = layer_profile(sim, dp);
+    const auto early = test::layer_profile(sim, dp);
     sim.run({"", true, 0, 0.6});
-    const auto prof = layer_profile(sim, dp);
+    const auto prof = test::layer_profile(sim, dp);
     double num = 0, den = 0, change = 0, u_max = 0;
     for (std::size_t k = 0; k < prof.size(); ++k) {
         const double ua = exact.at(prof[k].first);

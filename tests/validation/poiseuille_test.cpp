@@ -2,6 +2,7 @@
 // viscosity, periodic in x, body force F. Velocity profile L2 error against the series solution
 // below 5 % at the start-up times of analytic/poiseuille_morris1997.csv and below 2 % at steady
 // state (t = 10 s, issue #2 validation 2).
+#include "plane_channel.hpp"
 #include "run_case.hpp"
 #include <cmath>
 #include <fmt/format.h>
@@ -28,44 +29,10 @@ double poiseuille(double y, double t) {
 }
 
 std::string channel_case(const std::string& boundary = "dbc") {
-    const double dp = L / 20;
-    return fmt::format(R"(
-dimensions = 2
-dp = {0}
-[time]
-end = 10.0
-[output]
-vtk = false
-[physics]
-gravity = [{1}, 0]
-[domain]
-min = [0, {2}]
-max = [{3}, {4}]
-periodic = ["x"]
-[sph]
-c0 = 0.01
-viscosity = "laminar"
-nu = {5}
-diffusion = "none"
-boundary = "{7}"
-[[fluid]]
-name = "water"
-shape = "box"
-min = [0, 0]
-max = [{3}, {6}]
-hydrostatic = false
-[[wall]]
-name = "bottom"
-shape = "plane"
-point = [0, 0]
-normal = [0, 1]
-[[wall]]
-name = "top"
-shape = "plane"
-point = [0, {6}]
-normal = [0, -1]
-)",
-                       dp, F, -5 * dp, 12 * dp, L + 5 * dp, nu, L, boundary);
+    return test::plane_channel_case(L / 20, L, F, 10.0,
+                                    fmt::format("c0 = 0.01\nviscosity = \"laminar\"\nnu = {}\n"
+                                                "diffusion = \"none\"\nboundary = \"{}\"",
+                                                nu, boundary));
 }
 
 double l2_error(app::Simulation& sim, double t) {
