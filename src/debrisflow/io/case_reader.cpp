@@ -161,19 +161,19 @@ ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
     ProbeSpec p;
     p.origin = t.origin();
     p.name = t.name("name");
-    p.type =
-        t.choice("type", {"pressure",         "gauge",        "velocity",       "front",
-                          "wall_force",       "section",      "kinetic_energy", "runup",
-                          "mass_flux",        "body",         "discharge",      "trapping",
-                          "deposit",          "flow_section", "fluid_runup",    "pressure_map",
-                          "fem_displacement", "fem_force",    "fem_face_load",  "domain_exit"});
+    p.type = t.choice("type", {"pressure",         "gauge",        "velocity",       "front",
+                               "wall_force",       "section",      "kinetic_energy", "runup",
+                               "mass_flux",        "body",         "discharge",      "trapping",
+                               "deposit",          "flow_section", "fluid_runup",    "pressure_map",
+                               "fem_displacement", "fem_force",    "fem_face_load",  "domain_exit",
+                               "hazard_map"});
     p.every = t.positive("every", 0.001);
     if (c.t_end / p.every > 1e8)
         t.fail("every", fmt::format("would write {:.3g} rows over time.end = {} s (at most 1e8)",
                                     c.t_end / p.every, c.t_end));
     const bool fluid_probe = p.type == "pressure" || p.type == "velocity" || p.type == "gauge" ||
                              p.type == "front" || p.type == "flow_section" ||
-                             p.type == "fluid_runup";
+                             p.type == "fluid_runup" || p.type == "hazard_map";
     if (fluid_probe && c.fluids.empty()) t.fail("type", "a " + p.type + " probe needs a fluid");
     if (p.type == "pressure_map" && c.fluids.empty() && !c.has_dem && !c.has_bodies())
         t.fail("type", "a pressure_map probe needs a fluid, grains or bodies");
@@ -240,6 +240,24 @@ ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
         for (int d = 0; d < 3; ++d)
             if (!(p.max[d] > p.min[d])) t.fail("max", "must exceed min");
         p.bed = t.real("bed", p.min.z);
+    } else if (p.type == "hazard_map") {
+        // A plan grid over [min, max] (2D: along x); the columns count fluid between min.z
+        // and max.z; depths from `bed` (default min.z).
+        p.min = t.vec3("min", c.dim);
+        p.max = t.vec3("max", c.dim);
+        if (c.dim == 2) p.min.y = 0, p.max.y = 1;
+        for (int d = 0; d < 3; ++d)
+            if (!(p.max[d] > p.min[d])) t.fail("max", "must exceed min");
+        p.bed = t.real("bed", p.min.z);
+        const auto n = t.reals("cells");
+        const std::size_t plan = c.dim == 3 ? 2 : 1;
+        if (n.size() != plan || std::any_of(n.begin(), n.end(), [](Real v) {
+                return !(v >= 1 && v <= 10000 && v == std::floor(v));
+            }))
+            t.fail("cells", c.dim == 3 ? "expected [n_x, n_y], whole numbers from 1 to 10000"
+                                       : "expected [n_x], a whole number from 1 to 10000");
+        p.panels_u = int(n[0]);
+        p.panels_v = c.dim == 3 ? int(n[1]) : 1;
     } else if (p.type == "trapping") {
         if (!c.has_dem && !c.has_bodies())
             t.fail("type", "a trapping probe needs grains or bodies");

@@ -6,6 +6,7 @@
 #include "debrisflow/probes/fem_probes.hpp"
 #include "debrisflow/probes/flow_instruments.hpp"
 #include "debrisflow/probes/flow_probes.hpp"
+#include "debrisflow/probes/hazard_map.hpp"
 #include "debrisflow/probes/pressure_map.hpp"
 #include "debrisflow/probes/sph_probes.hpp"
 #include "debrisflow/probes/wall_force_probe.hpp"
@@ -138,6 +139,7 @@ std::unique_ptr<Probe> make_probe(const io::ProbeSpec& s, const io::CaseSpec& c)
     if (s.type == "deposit") return std::make_unique<DepositProbe>(s, c);
     if (s.type == "flow_section") return std::make_unique<FlowSectionProbe>(s, c);
     if (s.type == "domain_exit") return std::make_unique<DomainExitProbe>(s, c.dim == 2);
+    if (s.type == "hazard_map") return std::make_unique<HazardMapProbe>(s, c);
     for (std::size_t w = 0; w < c.walls.size(); ++w) {
         if (c.walls[w].name != s.wall) continue;
         if (s.type == "runup") return std::make_unique<RunupProbe>(s, int(w));
