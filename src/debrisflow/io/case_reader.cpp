@@ -93,7 +93,7 @@ void read_sph(const ConfigTable& t, CaseSpec& c) {
     if (ctx.boundary_factor < 0) t.fail("boundary_factor", "must be >= 0");
     p.viscosity_model =
         sph::ViscosityRegistry::visit_name(p.viscosity, [&]<class V>() -> sph::Viscosity {
-            if (V::requires_nu)
+            if constexpr (V::requires_nu)
                 p.nu = t.positive("nu");
             else
                 p.nu = t.has("nu") ? t.positive("nu") : 0;
