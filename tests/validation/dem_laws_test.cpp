@@ -46,7 +46,7 @@ TEST(DemLaws, DcdemRestitutionFollowsFromCn) {
     m.poisson = 0.35;
     m.friction = 0.35;
     for (Real cn : {1e-5, 0.05, 0.2}) {
-        m.damping_cn = cn;
+        m.keys<dem::DcdemLaw>().damping_cn = cn;
         const Real expected = dem::tsuji_restitution(cn * std::sqrt(4.5));
         for (Real v : {0.5, 3.0}) {
             const Real e = rebound_ratio(m, 0.01, v);

@@ -129,28 +129,23 @@ time::DtLimit critical_dt(const GrainSet& grains, const std::vector<int>& wall_m
                     consider(safety * tc_normal / rolling_ratio,
                              fmt::format("{} x rolling {} ({})", safety, what, pair));
             };
-            const Real tc = contact_time(p, meff, reff, vref);
-            if (p.law == LawId::linear) {
-                consider(safety * tc, fmt::format("{} x linear contact time ({})", safety, pair));
-                other_modes(undamped_contact_time(p, meff, reff, vref), p.kt / p.kn,
-                            "contact time");
-            } else {
-                consider(safety * tc, fmt::format("{} x Hertz contact time at {:.3g} m/s ({})",
-                                                  safety, vref, pair));
-                // Mindlin k_t = 8 G* sqrt(R* d) against the normal tangent 2 E* sqrt(R* d);
-                // DCDEM k_t = 2/7 (4/3) E* sqrt(R* d): 4/21 of that tangent.
-                const Real kt_over_kn = p.law == LawId::hertz_mindlin
-                                            ? (p.e_star > 0 ? 4 * p.g_star / p.e_star : 0)
-                                            : Real(4) / 21;
-                other_modes(tc, kt_over_kn, "Hertz contact time");
+            ContactLawRegistry::visit_index(p.law, [&]<class L>() {
+                const Real tc = L::contact_time(p, meff, reff, vref);
+                const std::string what =
+                    L::speed_dependent_time
+                        ? fmt::format("{} contact time at {:.3g} m/s", L::name, vref)
+                        : fmt::format("{} contact time", L::name);
+                consider(safety * tc, fmt::format("{} x {} ({})", safety, what, pair));
+                other_modes(L::undamped_contact_time(p, meff, reff, vref), L::tangential_ratio(p),
+                            what);
                 // Rayleigh time pi r sqrt(rho/G) / (0.1631 nu + 0.8766) of the grain material.
-                if (!ma.rigid && ma.youngs_modulus > 0) {
+                if (L::stiffness == Stiffness::moduli && !ma.rigid && ma.youngs_modulus > 0) {
                     const Real g = ma.youngs_modulus / (2 * (1 + ma.poisson));
                     const Real tr =
                         pi * r1 * std::sqrt(ma.density / g) / (0.1631 * ma.poisson + 0.8766);
                     consider(0.2 * tr, fmt::format("0.2 x Rayleigh time ({})", ma.name));
                 }
-            }
+            });
         }
     }
     return best;

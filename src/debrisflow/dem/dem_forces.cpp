@@ -9,7 +9,7 @@ namespace debrisflow::dem {
 void DemSolver::forces(Real half_kick, bool collect_obstacles) {
     const Index n = grains_.size();
     GrainView g = grains_.view();
-    const PairTable table{table_.data(), int(materials_.size())};
+    const PairTable table = pair_table();
     const neighbors::GridView grid = grid_.view();
     const int nt = n > parallel_min ? omp_get_max_threads() : 1;
     balance_threads(nt);
@@ -33,6 +33,11 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
     // What the per-grain pass needs: walls, bodies, fluid loads.
     const auto& prims = walls_.primitives();
     auto& wl = walls_.walls();
+    // a wall's own material, or the grain's where the wall has none
+    const auto wall_pair = [&](int mi, const WallPrimitive& pr) -> const PairParams& {
+        const int mw = wl[std::size_t(pr.wall)].material;
+        return table(mi, mw < 0 ? mi : mw);
+    };
     const std::size_t nw = wl.size();
     std::vector<Real> wall_sum(6 * nw, 0);
     bool record = false; // some wall keeps its contacts' loads (a pressure map reads them)
@@ -161,7 +166,8 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
                     }
                     const Vec3 q = closest_point(pr, si.x);
                     const Real d = wall_distance(pr, si.x, q);
-                    if (d >= si.r) {
+                    if (d >= si.r && !(table.adhesive &&
+                                       within_reach(wall_pair(si.material, pr), d - si.r, si.r))) {
                         wall_history(base + std::size_t(k)).clear();
                         continue;
                     }
@@ -176,7 +182,6 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
                         continue;
                     }
                     const std::size_t w = std::size_t(pr.wall);
-                    const int mw = wl[w].material < 0 ? si.material : wl[w].material;
                     // A triangle on moving nodes moves with the barycentric blend of its
                     // corners' velocities and hands the reaction back with the same weights.
                     Vec3 vw = wl[w].velocity, bw{};
@@ -187,8 +192,8 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
                         vw = blend(*nc, node_v, bw);
                     }
                     const WallContactForce c2 =
-                        wall_contact_force(table(si.material, mw), si, pr, cand.q[c], cand.d[c], vw,
-                                           h_contact, wall_history(base + std::size_t(k)));
+                        wall_contact_force(wall_pair(si.material, pr), si, pr, cand.q[c], cand.d[c],
+                                           vw, h_contact, wall_history(base + std::size_t(k)));
                     if (nc && node_j) {
                         for (int a = 0; a < 3; ++a) {
                             Vec3& J = node_j[nc->node[std::size_t(a)]];
@@ -223,7 +228,10 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
                     const HistoryRef hk{oxi + sk, oroll ? oroll + sk : nullptr};
                     const Vec3 r = si.x - o.x;
                     const Real rs = si.r + o.r, d2 = dot(r, r);
-                    if (d2 >= rs * rs || d2 == 0) {
+                    if (d2 == 0 ||
+                        (d2 >= rs * rs &&
+                         !(table.adhesive && within_reach(table(si.material, o.material),
+                                                          std::sqrt(d2) - rs, si.r * o.r / rs)))) {
                         hk.clear();
                         continue;
                     }

@@ -30,7 +30,7 @@ DemSolver::DemSolver(const DemParams& params, GrainSet& grains, WallSet& walls,
                                   [](const PairParams& p) { return p.rolling == RollingId::epsd; });
     for (auto* slots : {&grain_slots_, &wall_slots_, &obstacle_slots_}) slots->keep_rolling(epsd);
     for (Real r : grains_.radius) max_radius_ = std::max(max_radius_, r);
-    skin_ = params_.skin * 2 * max_radius_;
+    size_search_margin();
     auto_dt_ = critical_dt(grains_, wall_materials(), materials_, table_, params_, domain_,
                            params_.safety);
     stability_dt_ = critical_dt(grains_, wall_materials(), materials_, table_, params_, domain_,
@@ -60,7 +60,7 @@ GrainContactInputs DemSolver::grain_contact_inputs() {
             grain_slots_.tangential(),
             grain_slots_.rolling(),
             grain_slots_.capacity(),
-            PairTable{table_.data(), int(materials_.size())},
+            pair_table(),
             grid_.view(),
             current_h_};
 }
@@ -113,7 +113,7 @@ void DemSolver::rebuild() {
     const GrainView g = grains_.view();
     refresh_hot();
     const neighbors::GridView grid = grid_.view();
-    const Real skin = skin_;
+    const Real skin = search_margin();
     const std::int32_t* clump_of = clump_of_id_.empty() ? nullptr : clump_of_id_.data();
     grain_slots_.build(n, [&](Index i, auto&& emit) {
         const Real ri = g.radius[i];
@@ -165,7 +165,7 @@ void DemSolver::configure_grid() {
         hx = std::max(hx, x[i].x), hy = std::max(hy, x[i].y), hz = std::max(hz, x[i].z);
     }
     lo = {lx, ly, lz}, hi = {hx, hy, hz};
-    const Real radius = 2 * max_radius_ + skin_;
+    const Real radius = 2 * max_radius_ + search_margin();
     for (int d = 0; d < 3; ++d) {
         if (domain_.periodic[d] || !(hi[d] >= lo[d])) {
             lo[d] = domain_.lo[d], hi[d] = domain_.hi[d];
@@ -252,7 +252,7 @@ void DemSolver::build_obstacle_slots() {
     Real rmax = 0;
     for (const auto& o : sph) rmax = std::max(rmax, o.r);
     // Hash of the obstacle spheres on cells of one reach (largest grain + sphere + skin).
-    const Real cell = std::max(max_radius_ + rmax + skin_, Real(1e-9));
+    const Real cell = std::max(max_radius_ + rmax + search_margin(), Real(1e-9));
     auto key = [&](long i, long j, long k) {
         return (std::uint64_t(i) * 73856093u) ^ (std::uint64_t(j) * 19349663u) ^
                (std::uint64_t(k) * 83492791u);
@@ -265,7 +265,7 @@ void DemSolver::build_obstacle_slots() {
             .push_back(Index(s));
     }
     const GrainView g = grains_.view();
-    const Real skin = skin_;
+    const Real skin = search_margin();
     obstacle_slots_.build(n, [&](Index i, auto&& emit) {
         const Vec3 p = g.pos[i];
         const long ci = long(std::floor(p.x / cell)), cj = long(std::floor(p.y / cell)),
@@ -282,6 +282,12 @@ void DemSolver::build_obstacle_slots() {
                     }
                 }
     });
+}
+
+void DemSolver::size_search_margin() {
+    skin_ = params_.skin * 2 * max_radius_;
+    // every effective radius of a contact is at most the largest grain's
+    reach_ = largest_reach(table_, max_radius_);
 }
 
 void DemSolver::advance(Real dt) {
@@ -334,7 +340,7 @@ void DemSolver::grains_added(Index old_count) {
     obstacle_builds_seen_ = -1;
     // New sizes may need a wider search and a shorter step (the step never grows).
     for (Real r : grains_.radius) max_radius_ = std::max(max_radius_, r);
-    skin_ = params_.skin * 2 * max_radius_;
+    size_search_margin();
     if (params_.dt <= 0) {
         const auto lim = critical_dt(grains_, wall_materials(), materials_, table_, params_,
                                      domain_, params_.safety, obstacles_);
@@ -364,7 +370,7 @@ void DemSolver::include_bodies() {
 void DemSolver::include_sizes(const GrainSet& prototypes) {
     const std::vector<int> wall_materials = this->wall_materials();
     for (Real r : prototypes.radius) max_radius_ = std::max(max_radius_, r);
-    skin_ = params_.skin * 2 * max_radius_;
+    size_search_margin();
     const auto lim = critical_dt(prototypes, wall_materials, materials_, table_, params_, domain_,
                                  params_.safety);
     if (lim.dt < auto_dt_.dt) auto_dt_ = lim;

@@ -178,7 +178,12 @@ private:
     // Interleaved copy of the state the contact loop reads (one 96-byte record per grain
     // instead of twelve arrays), written by the drift; the GrainSet stays the master copy.
     std::vector<GrainState> hot_;
-    Real max_radius_ = 0, skin_ = 0, drift_ = 0, dt_ = 0;
+    // skin_: the neighbour lists' margin for motion between rebuilds; reach_: the farthest an
+    // adhesive law acts beyond touch (largest_reach), added to the search radius.
+    Real max_radius_ = 0, skin_ = 0, reach_ = 0, drift_ = 0, dt_ = 0;
+    void size_search_margin();
+    Real search_margin() const { return skin_ + reach_; }
+    PairTable pair_table() const { return {table_.data(), int(materials_.size()), reach_ > 0}; }
     Real current_h_ = 0; // size of the step being taken (tangential spring increment)
     time::DtLimit auto_dt_{0, ""}, stability_dt_{0, ""};
     bool built_ = false, bad_ = false;

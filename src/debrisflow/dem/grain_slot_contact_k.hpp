@@ -22,13 +22,15 @@ struct GrainContactInputs {
 static_assert(std::is_trivially_copyable_v<GrainContactInputs>);
 
 // Grain i's contact with candidate j, as the contact loop evaluates every slot: true and the
-// force in c when they touch; false, and the slot's history cleared, when they do not.
+// force in c when they touch (or are within an adhesive law's reach); false, and the slot's
+// history cleared, when they do not.
 DF_HD DF_HOT_INLINE bool grain_slot_force(const PairTable& table, const neighbors::GridView& grid,
                                           const GrainState& si, const GrainState& sj, Real h,
                                           HistoryRef history, GrainPairForce& c) {
     const Vec3 r = grid.separation(si.x, sj.x);
     const Real rs = si.r + sj.r, d2 = dot(r, r);
-    if (d2 >= rs * rs) {
+    if (d2 >= rs * rs && !(table.adhesive && within_reach(table(si.material, sj.material),
+                                                          std::sqrt(d2) - rs, si.r * sj.r / rs))) {
         history.clear();
         return false;
     }

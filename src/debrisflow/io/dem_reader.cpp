@@ -1,6 +1,7 @@
 #include "debrisflow/io/dem_reader.hpp"
 #include "debrisflow/coupling/drag_laws_k.hpp"
 #include "debrisflow/dem/contact_laws_k.hpp"
+#include "debrisflow/dem/materials.hpp"
 #include "debrisflow/io/named.hpp"
 #include <algorithm>
 #include <filesystem>
@@ -11,37 +12,59 @@ namespace debrisflow::io {
 
 namespace {
 
+// A law's traits by name (the registry's), for the checks of materials and contacts.
+struct LawTraits {
+    dem::Stiffness stiffness;
+    Real min_restitution;
+    bool uses_restitution;
+};
+LawTraits law_traits(const std::string& law) {
+    return dem::ContactLawRegistry::visit_name(law, []<class L>() {
+        return LawTraits{L::stiffness, L::min_restitution, L::uses_restitution};
+    });
+}
+
+void check_restitution(const ConfigTable& t, Real e, const std::string& law) {
+    if (!(e > 0 && e <= 1)) t.fail("restitution", "must be within (0, 1]");
+    const Real least = law_traits(law).min_restitution;
+    if (e < least)
+        t.fail("restitution", fmt::format("must be within [{}, 1] for the {} law (the Tsuji "
+                                          "damping of a lower one is overdamped)",
+                                          least, law));
+}
+
 dem::Material read_material(const ConfigTable& t) {
     dem::Material m;
     m.name = t.name("name");
     m.law = t.choice("law", dem::ContactLawRegistry::names(), "linear");
+    const LawTraits law = law_traits(m.law);
     m.rigid = t.boolean("rigid", false);
     m.density = t.has("density") || !m.rigid ? t.positive("density", 2650) : 0;
-    if (m.law == "linear" || t.has("kn")) {
+    // The law's own stiffness keys are required; the others' are read when given (for pairs
+    // of another law).
+    if (law.stiffness == dem::Stiffness::springs || t.has("kn")) {
         m.kn = t.positive("kn");
         m.kt = t.positive("kt", m.kn);
     }
-    if (m.law != "linear" || t.has("youngs_modulus")) {
+    if (law.stiffness == dem::Stiffness::moduli || t.has("youngs_modulus")) {
         if (!m.rigid) m.youngs_modulus = t.positive("youngs_modulus");
         m.poisson = t.real("poisson", 0.25);
         if (m.poisson < 0 || m.poisson >= 0.5) t.fail("poisson", "must be within [0, 0.5)");
     }
-    if (m.law == "dcdem" && t.has("restitution"))
+    if (!law.uses_restitution && t.has("restitution"))
         t.fail("restitution",
-               "not a parameter of the dcdem law, which damps with damping_cn (Canelas et al. "
-               "2017); give a pair with another material its restitution in a [[contact]]");
+               fmt::format("not a parameter of the {} law, which has its own damping key; give a "
+                           "pair with another material its restitution in a [[contact]]",
+                           m.law));
     m.restitution = t.real("restitution", 0.5);
-    if (!(m.restitution > 0 && m.restitution <= 1)) t.fail("restitution", "must be within (0, 1]");
-    if (m.law == "hertz_mindlin" && m.restitution < dem::hertz_min_restitution)
-        t.fail("restitution", fmt::format("must be within [{}, 1] for the hertz_mindlin law (the "
-                                          "Tsuji damping of a lower one is overdamped)",
-                                          dem::hertz_min_restitution));
+    check_restitution(t, m.restitution, m.law);
     m.friction = t.real("friction", 0.5);
     if (m.friction < 0) t.fail("friction", "must be >= 0");
     m.rolling_friction = t.real("rolling_friction", 0);
     if (m.rolling_friction < 0) t.fail("rolling_friction", "must be >= 0");
-    m.damping_cn = t.real("damping_cn", 1e-5);
-    if (m.damping_cn < 0) t.fail("damping_cn", "must be >= 0");
+    dem::ContactLawRegistry::for_each([&]<class L>() {
+        if constexpr (dem::HasMaterialKeys<L>) m.keys<L>() = L::read_keys(t, m.law == L::name);
+    });
     t.finish();
     return m;
 }
@@ -58,18 +81,15 @@ dem::PairOverride read_contact(const ConfigTable& t, const std::vector<dem::Mate
     if (t.has("kt")) o.kt = t.positive("kt");
     if (t.has("restitution")) {
         o.restitution = t.real("restitution");
-        if (!(*o.restitution > 0 && *o.restitution <= 1))
-            t.fail("restitution", "must be within (0, 1]");
-        const std::string law = o.law ? *o.law : find_named(mats, o.a)->law;
-        if (law == "hertz_mindlin" && *o.restitution < dem::hertz_min_restitution)
-            t.fail("restitution", fmt::format("must be within [{}, 1] for the hertz_mindlin law",
-                                              dem::hertz_min_restitution));
+        check_restitution(t, *o.restitution, o.law ? *o.law : find_named(mats, o.a)->law);
     }
-    for (const char* key : {"friction", "rolling_friction", "damping_cn"})
+    for (const char* key : {"friction", "rolling_friction"})
         if (t.has(key) && t.real(key) < 0) t.fail(key, "must be >= 0 (as on a [[material]])");
     if (t.has("friction")) o.friction = t.real("friction");
     if (t.has("rolling_friction")) o.rolling_friction = t.real("rolling_friction");
-    if (t.has("damping_cn")) o.damping_cn = t.real("damping_cn");
+    dem::ContactLawRegistry::for_each([&]<class L>() {
+        if constexpr (dem::HasMaterialKeys<L>) o.keys<L>() = L::read_override(t);
+    });
     t.finish();
     return o;
 }
@@ -266,11 +286,14 @@ void check_mixed_laws(const std::vector<dem::Material>& mats,
                                        "[\"{}\", \"{}\"] and the law of their pair",
                                        b.name, b.law, a.name, a.law, a.name, b.name));
             const std::string law = o && o->law ? *o->law : a.law;
-            if (law != "dcdem" && (a.law == "dcdem" || b.law == "dcdem") && !o->restitution)
-                contact_tables[k].fail("restitution",
-                                       fmt::format("required: the pair \"{}\"-\"{}\" uses {}, and "
-                                                   "the dcdem material has no restitution",
-                                                   a.name, b.name, law));
+            const bool a_has = law_traits(a.law).uses_restitution,
+                       b_has = law_traits(b.law).uses_restitution;
+            if (law_traits(law).uses_restitution && !(a_has && b_has) && !o->restitution)
+                contact_tables[k].fail(
+                    "restitution",
+                    fmt::format("required: the pair \"{}\"-\"{}\" uses {}, and the {} material "
+                                "has no restitution",
+                                a.name, b.name, law, a_has ? b.law : a.law));
         }
 }
 
