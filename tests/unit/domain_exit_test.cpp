@@ -98,8 +98,14 @@ TEST(DomainExit, StopPolicyStopsTheRunNamingTheGrain) {
 }
 
 TEST(DomainExit, AProbeNeedsTheRemovePolicy) {
-    EXPECT_THROW(test::case_from_toml("leaving_probe", leaving_grains, {"domain.exit=stop"}),
-                 InputError);
+    // the probe reads its settings when it is made, before anything is built
+    const auto spec = test::case_from_toml("leaving_probe", leaving_grains, {"domain.exit=stop"});
+    try {
+        app::Simulation sim(spec);
+        FAIL() << "a domain_exit probe under domain.exit = \"stop\" should be rejected";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("probe.0.type"), std::string::npos) << e.what();
+    }
 }
 
 // A clump leaves whole as soon as one member is out: every member is removed and counted at the

@@ -4,6 +4,7 @@
 #include "debrisflow/exec/parallel.hpp"
 #include "debrisflow/io/vtk_writer.hpp"
 #include "debrisflow/probes/flow_probes.hpp"
+#include "debrisflow/probes/probe_registry.hpp"
 #include "debrisflow/scenario/build_bodies.hpp"
 #include "debrisflow/scenario/build_fem.hpp"
 #include "debrisflow/scenario/build_grains.hpp"
@@ -21,6 +22,8 @@ Simulation::Simulation(io::CaseSpec spec)
     : spec_(std::move(spec)), domain_exit_(spec_.domain_exit, spec_.domain, spec_.dim) {
     // Nothing is allocated for a case that cannot fit in memory (or --max-memory).
     scenario::require_within_budget(scenario::estimate_resources(spec_));
+    // The probes read their own settings: a bad one is rejected before anything is built.
+    for (const auto& p : spec_.probes) probes_.push_back(probes::make_probe(p, spec_));
     std::vector<scenario::BuiltBody> bodies;
     if (spec_.has_bodies()) bodies = scenario::build_body_geometry(spec_);
     ParticleId first_body_particle = 0;
@@ -40,7 +43,12 @@ Simulation::Simulation(io::CaseSpec spec)
         }
         solver_ = std::make_unique<sph::SphSolver>(spec_.sph, set_, spec_.domain);
     }
-    if (spec_.has_dem || spec_.has_bodies()) scenario::build_dem_walls(spec_, dem_walls_);
+    if (spec_.has_dem || spec_.has_bodies()) {
+        scenario::build_dem_walls(spec_, dem_walls_);
+        for (const auto& p : probes_)
+            if (p->contact_wall() >= 0)
+                dem_walls_.walls()[std::size_t(p->contact_wall())].record_contacts = true;
+    }
     if (fem_ && (spec_.has_dem || spec_.has_bodies())) couple_fem_to_contacts();
     if (spec_.has_bodies())
         rigid_ = scenario::make_body_solver(spec_, bodies, &dem_walls_, solver_ ? &set_ : nullptr,
@@ -72,7 +80,6 @@ Simulation::Simulation(io::CaseSpec spec)
                                          stable.dt));
     }
     wall_removed_.assign(spec_.walls.size(), 0);
-    for (const auto& p : spec_.probes) probes_.push_back(probes::make_probe(p, spec_));
     for (const auto& in : spec_.inlets) {
         inlets_.push_back(std::make_unique<flow::FluidInlet>(in, spec_));
         probes_.push_back(
@@ -166,9 +173,9 @@ void Simulation::settle_grains() {
     settled_ = true;
 }
 
-io::RunReport Simulation::run(const RunOptions& opt) {
+RunReport Simulation::run(const RunOptions& opt) {
     exec::set_threads(opt.threads);
-    io::RunReport report;
+    RunReport report;
     report.threads = exec::max_threads();
     report.fluid = set_.count(particles::Kind::fluid);
     report.boundary = set_.count(particles::Kind::boundary);
@@ -456,7 +463,7 @@ io::RunReport Simulation::run(const RunOptions& opt) {
         finish_stats();
         log_.line(std::string(asked ? "run " : "ERROR: run stopped: ") + e.what());
         if (files) {
-            io::write_summary(opt.out_dir + "/summary.json", spec_, report, probes_);
+            write_summary(opt.out_dir + "/summary.json", spec_, report, probes_);
             log_.line("output so far kept in " + opt.out_dir);
         }
         throw;
@@ -494,7 +501,7 @@ io::RunReport Simulation::run(const RunOptions& opt) {
         if (dem_ && grains_.clumps.empty())
             scenario::write_grain_state(opt.out_dir + "/grains_final.csv", grains_,
                                         spec_.dem.materials);
-        io::write_summary(opt.out_dir + "/summary.json", spec_, report, probes_, design);
+        write_summary(opt.out_dir + "/summary.json", spec_, report, probes_, design);
         log_.line("output: " + opt.out_dir +
                   " (vtk/*.pvd for ParaView, probes/*.csv, summary.json, log.txt)");
     }

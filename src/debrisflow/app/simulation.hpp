@@ -1,4 +1,5 @@
 #pragma once
+#include "debrisflow/app/summary.hpp"
 #include "debrisflow/core/log.hpp"
 #include "debrisflow/coupling/dem_fem.hpp"
 #include "debrisflow/coupling/sph_dem.hpp"
@@ -11,7 +12,6 @@
 #include "debrisflow/flow/outlet.hpp"
 #include "debrisflow/flow/rock_feed.hpp"
 #include "debrisflow/io/case_spec.hpp"
-#include "debrisflow/io/summary.hpp"
 #include "debrisflow/io/vtk_writer.hpp"
 #include "debrisflow/probes/probe.hpp"
 #include "debrisflow/rigid/body_solver.hpp"
@@ -42,7 +42,7 @@ public:
     // Runs from the current time (0, or where the previous run stopped) to time.end. On instability
     // the output so far is kept, summary.json is written with status "unstable", and the
     // InstabilityError is rethrown.
-    io::RunReport run(const RunOptions& opt);
+    RunReport run(const RunOptions& opt);
 
     const io::CaseSpec& spec() const { return spec_; }
     particles::ParticleSet& particles() { return set_; }

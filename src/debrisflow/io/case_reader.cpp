@@ -147,201 +147,17 @@ sph::Domain read_domain(const ConfigTable& t, int dim, DomainExitSpec& exit) {
     return d;
 }
 
-// A point probe outside the domain would read nothing (p = 0) for the whole run.
-void require_in_domain(const ConfigTable& t, const std::string& key, Vec3 p, const CaseSpec& c) {
-    for (int d = 0; d < 3; ++d)
-        if (!(c.dim == 2 && d == 1) && (p[d] < c.domain.lo[d] || p[d] > c.domain.hi[d]))
-            t.fail(key, fmt::format("({:.4g}, {:.4g}, {:.4g}) m lies outside the domain ({:.4g}, "
-                                    "{:.4g}, {:.4g}) to ({:.4g}, {:.4g}, {:.4g}) m",
-                                    p.x, p.y, p.z, c.domain.lo.x, c.domain.lo.y, c.domain.lo.z,
-                                    c.domain.hi.x, c.domain.hi.y, c.domain.hi.z));
-}
-
+// The common part of a [[probe]] block; its type reads the rest when the probe is made.
 ProbeSpec read_probe(const ConfigTable& t, const CaseSpec& c) {
     ProbeSpec p;
     p.origin = t.origin();
     p.name = t.name("name");
-    p.type = t.choice("type", {"pressure",         "gauge",        "velocity",       "front",
-                               "wall_force",       "section",      "kinetic_energy", "runup",
-                               "mass_flux",        "body",         "discharge",      "trapping",
-                               "deposit",          "flow_section", "fluid_runup",    "pressure_map",
-                               "fem_displacement", "fem_force",    "fem_face_load",  "domain_exit",
-                               "hazard_map"});
+    p.type = t.string("type");
     p.every = t.positive("every", 0.001);
     if (c.t_end / p.every > 1e8)
         t.fail("every", fmt::format("would write {:.3g} rows over time.end = {} s (at most 1e8)",
                                     c.t_end / p.every, c.t_end));
-    const bool fluid_probe = p.type == "pressure" || p.type == "velocity" || p.type == "gauge" ||
-                             p.type == "front" || p.type == "flow_section" ||
-                             p.type == "fluid_runup" || p.type == "hazard_map";
-    if (fluid_probe && c.fluids.empty()) t.fail("type", "a " + p.type + " probe needs a fluid");
-    if (p.type == "pressure_map" && c.fluids.empty() && !c.has_dem && !c.has_bodies())
-        t.fail("type", "a pressure_map probe needs a fluid, grains or bodies");
-    const bool grain_probe = p.type == "section" || p.type == "kinetic_energy" ||
-                             p.type == "runup" || p.type == "mass_flux";
-    if (grain_probe && !c.has_dem) t.fail("type", "a " + p.type + " probe needs [[grains]]");
-    if (p.type == "fem_force") {
-        if (!c.has_fem()) t.fail("type", "a fem_force probe needs a [[solid]]");
-    } else if (p.type == "fem_face_load") {
-        if (!c.has_fem()) t.fail("type", "a fem_face_load probe needs a [[solid]]");
-        p.set = t.string("set");
-        const auto dot = p.set.find('.');
-        if (dot == std::string::npos ||
-            std::none_of(c.fem.solids.begin(), c.fem.solids.end(),
-                         [&](const auto& s) { return s.name == p.set.substr(0, dot); }))
-            t.fail("set", "needs \"<solid>.<set>\" naming a [[solid]] (e.g. \"dam.upstream\")");
-        p.normal = t.vec3("normal", c.dim);
-        if (!(norm(p.normal) > 0)) t.fail("normal", "must be a non-zero vector");
-        const std::string axis = t.choice("axis", {"x", "y", "z"}, "z");
-        p.axis = axis == "x" ? 0 : axis == "y" ? 1 : 2;
-        p.panels_u = int(t.integer("bins", 5, 1, 100));
-    } else if (p.type == "fem_displacement") {
-        if (!c.has_fem()) t.fail("type", "a fem_displacement probe needs a [[solid]]");
-        if (t.has("set")) {
-            p.set = t.string("set");
-            const auto dot = p.set.find('.');
-            const std::string solid = p.set.substr(0, dot);
-            if (std::none_of(c.fem.solids.begin(), c.fem.solids.end(),
-                             [&](const auto& s) { return s.name == solid; }))
-                t.fail("set", "no [[solid]] named \"" + solid +
-                                  "\" (a set is \"<solid>.<set>\" or \"<solid>\")");
-        } else {
-            p.position = t.vec3("position", c.dim);
-        }
-    } else if (p.type == "body") {
-        p.body = t.string("body");
-        if (std::none_of(c.rigid.bodies.begin(), c.rigid.bodies.end(),
-                         [&](const auto& b) { return b.name == p.body; }))
-            t.fail("body", "no [[body]] named \"" + p.body + "\"");
-    } else if (p.type == "gauge") {
-        // A gauge stands at a plan position: (x, y) in 3D, (x) in 2D; a vertical coordinate,
-        // if given, is ignored (the gauge scans the whole height of the domain).
-        const auto v = t.reals("position");
-        const std::size_t plan = c.dim == 3 ? 2 : 1;
-        if (v.size() != plan && v.size() != plan + 1)
-            t.fail("position", c.dim == 3 ? "expected [x, y] (or [x, y, z], z ignored)"
-                                          : "expected [x] (or [x, z], z ignored)");
-        p.position = c.dim == 3 ? Vec3{v[0], v[1], c.domain.lo.z} : Vec3{v[0], 0, c.domain.lo.z};
-        require_in_domain(t, "position", p.position, c);
-    } else if (p.type == "pressure" || p.type == "velocity") {
-        p.position = t.vec3("position", c.dim);
-        require_in_domain(t, "position", p.position, c);
-    } else if (p.type == "section" || p.type == "kinetic_energy") {
-        p.min = t.vec3("min", c.dim);
-        p.max = t.vec3("max", c.dim);
-        if (c.dim == 2) p.min.y = -1e30, p.max.y = 1e30;
-        for (int d = 0; d < 3; ++d)
-            if (!(p.max[d] > p.min[d])) t.fail("max", "must exceed min");
-        if (p.type == "section") p.bed = t.real("bed", p.min.z);
-    } else if (p.type == "flow_section" || p.type == "deposit") {
-        p.min = t.vec3("min", c.dim);
-        p.max = t.vec3("max", c.dim);
-        if (c.dim == 2) p.min.y = -1e30, p.max.y = 1e30;
-        for (int d = 0; d < 3; ++d)
-            if (!(p.max[d] > p.min[d])) t.fail("max", "must exceed min");
-        p.bed = t.real("bed", p.min.z);
-    } else if (p.type == "hazard_map") {
-        // A plan grid over [min, max] (2D: along x); the columns count fluid between min.z
-        // and max.z; depths from `bed` (default min.z).
-        p.min = t.vec3("min", c.dim);
-        p.max = t.vec3("max", c.dim);
-        if (c.dim == 2) p.min.y = 0, p.max.y = 1;
-        for (int d = 0; d < 3; ++d)
-            if (!(p.max[d] > p.min[d])) t.fail("max", "must exceed min");
-        p.bed = t.real("bed", p.min.z);
-        const auto n = t.reals("cells");
-        const std::size_t plan = c.dim == 3 ? 2 : 1;
-        if (n.size() != plan || std::any_of(n.begin(), n.end(), [](Real v) {
-                return !(v >= 1 && v <= 10000 && v == std::floor(v));
-            }))
-            t.fail("cells", c.dim == 3 ? "expected [n_x, n_y], whole numbers from 1 to 10000"
-                                       : "expected [n_x], a whole number from 1 to 10000");
-        p.panels_u = int(n[0]);
-        p.panels_v = c.dim == 3 ? int(n[1]) : 1;
-    } else if (p.type == "trapping") {
-        if (!c.has_dem && !c.has_bodies())
-            t.fail("type", "a trapping probe needs grains or bodies");
-        p.position = t.vec3("upstream", c.dim);
-        p.point_b = t.vec3("downstream", c.dim);
-        p.normal = t.vec3("normal", c.dim, {1, 0, 0});
-        if (norm(p.normal) == 0) t.fail("normal", "must be a non-zero vector");
-        p.normal = (1 / norm(p.normal)) * p.normal;
-        if (!(dot(p.point_b - p.position, p.normal) > 0))
-            t.fail("downstream", "must lie downstream (along normal) of the upstream plane");
-        const auto w = t.reals("window");
-        if (w.size() != 2 || !(w[1] > w[0]) || w[0] < 0)
-            t.fail("window", "expected [t_start, t_end] with t_end > t_start >= 0 [s]");
-        p.t0 = w[0], p.t1 = w[1];
-    } else if (p.type == "mass_flux" || p.type == "discharge") {
-        p.position = t.vec3("point", c.dim);
-        p.normal = t.vec3("normal", c.dim);
-        if (norm(p.normal) == 0) t.fail("normal", "must be a non-zero vector");
-        p.normal = (1 / norm(p.normal)) * p.normal;
-    } else if (p.type == "domain_exit") {
-        if (c.domain_exit.policy != "remove")
-            t.fail("type", "a domain_exit probe counts what domain.exit = \"remove\" removes; "
-                           "domain.exit is \"stop\"");
-    } else if (p.type == "front") {
-        // "+x" (or "x"): the largest x of the fluid; "-x": the smallest (a surge running
-        // towards -x)
-        const std::string a =
-            t.choice("axis", {"x", "y", "z", "+x", "+y", "+z", "-x", "-y", "-z"}, "x");
-        p.axis = a.back() == 'x' ? 0 : (a.back() == 'y' ? 1 : 2);
-        p.normal = {};
-        p.normal[p.axis] = a.front() == '-' ? -1 : 1;
-        if (c.dim == 2 && p.axis == 1) t.fail("axis", "2D cases flow in the x-z plane");
-    } else {
-        p.wall = t.string("wall");
-        bool found = false;
-        for (const auto& w : c.walls) found = found || w.name == p.wall;
-        if (!found) t.fail("wall", "no wall named \"" + p.wall + "\"");
-        if (p.type == "wall_force") {
-            p.normal = t.vec3("normal", c.dim, {});
-            if (norm(p.normal) > 0) p.normal = (1 / norm(p.normal)) * p.normal;
-            p.approach = t.string("approach", "");
-            p.boulder = t.string("boulder", "");
-            if ((!p.approach.empty() || !p.boulder.empty()) && norm(p.normal) == 0)
-                t.fail("normal", "design companions need the wall's normal (the load direction)");
-            if (!p.approach.empty()) {
-                p.width = c.dim == 2 ? t.positive("width", 1) : t.positive("width");
-                p.rho = t.real("rho", 0);
-                if (p.rho < 0) t.fail("rho", "must be >= 0 (0: the approach probe's density)");
-                if (std::none_of(c.probes.begin(), c.probes.end(), [&](const auto& q) {
-                        return q.name == p.approach &&
-                               (q.type == "flow_section" || q.type == "section");
-                    }))
-                    t.fail("approach", "no flow_section or section probe named \"" + p.approach +
-                                           "\" above this one");
-            }
-            if (!p.boulder.empty()) {
-                p.k_c = t.positive("k_c", 0.1);
-                if (std::none_of(c.probes.begin(), c.probes.end(), [&](const auto& q) {
-                        return q.name == p.boulder && q.type == "body";
-                    }))
-                    t.fail("boulder", "no body probe named \"" + p.boulder + "\" above this one");
-            }
-        } else if (p.type == "pressure_map") {
-            const auto& w = *std::find_if(c.walls.begin(), c.walls.end(),
-                                          [&](const auto& w) { return w.name == p.wall; });
-            if (w.type == "plane" || w.type == "stl")
-                t.fail("wall", "a pressure map tiles a face of the wall's bounding box; wall \"" +
-                                   p.wall + "\" is a " + w.type +
-                                   " (use a box, an open_tank or a [[structure]])");
-            const std::string a = t.choice("axis", {"x", "y", "z"}, "x");
-            p.axis = a == "x" ? 0 : (a == "y" ? 1 : 2);
-            p.normal = t.vec3("normal", c.dim, {});
-            if (!(std::abs(norm(p.normal) - 1) < 1e-9) || std::abs(p.normal[p.axis]) != 1)
-                t.fail("normal", "must be the unit vector along axis, pointing into the fluid");
-            const auto n = t.reals("panels");
-            if (n.size() != 2 || n[0] < 1 || n[1] < 1)
-                t.fail("panels", "expected [n_u, n_v] (>= 1) panels over the face");
-            p.panels_u = int(n[0]), p.panels_v = int(n[1]);
-            if (c.dim == 2) p.panels_v = 1; // one row across the unit width
-        } else {
-            p.bed = t.real("bed", c.domain.lo.z);
-        }
-    }
-    t.finish();
+    p.table = std::make_shared<const ConfigTable>(t);
     return p;
 }
 
@@ -365,7 +181,9 @@ CaseSpec read_case_text(const std::string& text, const std::string& path,
                         const std::vector<std::string>& overrides) {
     CaseSpec c;
     c.file = path;
-    toml::table doc;
+    // Kept alive by the tables read from it: a probe's block is read when the probe is made.
+    auto document = std::make_shared<toml::table>();
+    toml::table& doc = *document;
     try {
         doc = toml::parse(text, path);
     } catch (const toml::parse_error& e) {
@@ -382,7 +200,7 @@ CaseSpec read_case_text(const std::string& text, const std::string& path,
         c.physics_toml = echo_toml(physics);
     }
 
-    ConfigTable root(doc, path, "");
+    ConfigTable root(std::shared_ptr<const toml::table>(document), path);
     c.origin = root.origin();
     c.name = root.has("name") ? root.name("name")
                               : file_safe_name(std::filesystem::path(path).stem().string());

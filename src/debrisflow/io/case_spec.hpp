@@ -8,11 +8,14 @@
 #include "debrisflow/sph/sph_params.hpp"
 #include "debrisflow/sph/sph_solver.hpp"
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace debrisflow::io {
+
+class ConfigTable;
 
 // A solid region: box (min, max), cylinder (base centre, axis, radius, length; a disc in
 // 2D) or closed triangle mesh from STL (scaled, then offset).
@@ -165,28 +168,14 @@ struct RigidSpec {
     std::vector<FeedSpec> feeds; // rock feeds (bodies released during the run)
 };
 
+// A [[probe]] block: its name, type and sampling interval; the rest of the block belongs to
+// the probe's type, which reads it when the probe is made (probes/probe_registry.hpp).
 struct ProbeSpec {
     std::string name;
-    std::string type; // pressure, gauge, velocity, front, wall_force, section,
-                      // kinetic_energy, runup, mass_flux, body
-    std::string body; // body: the body tracked
-    std::string set;  // fem_displacement: node set "<solid>.<set>" (empty: nearest node)
-    Vec3 position;
-    std::string wall;
-    int axis = 0;
+    std::string type;
     Real every = 0;
-    Vec3 normal;   // wall_force: direction of the normal component; mass_flux: plane normal
-    Vec3 min, max; // kinetic_energy: box; section: window
-    Real bed = 0;  // section, runup: bed elevation z [m]
-    Vec3 point_b;  // trapping: the downstream plane's point (position: the upstream one)
-    Real t0 = 0, t1 = 1e30;         // trapping: counting window [s]
-    int panels_u = 1, panels_v = 1; // pressure_map: panels along the face's two axes
-    // wall_force design companions: approach-flow probe (flow_section or section), impact
-    // width [m] and bulk density [kg/m^3] (0: from the probe) for F = alpha rho v^2 h w; a body
-    // probe for the Hertz boulder load with the load-reduction factor K_c (Kwan 2012).
-    std::string approach, boulder;
-    Real width = 0, rho = 0, k_c = 0.1;
-    Origin origin; // where the block is in the case file
+    std::shared_ptr<const ConfigTable> table; // the block (keeps the parsed case file alive)
+    Origin origin;                            // where the block is in the case file
 };
 
 // Fluid entering through the downstream face of a buffer box (`min`-`max`) along `axis`

@@ -43,8 +43,15 @@ std::string type_name(const toml::node& n) {
 } // namespace
 
 ConfigTable::ConfigTable(const toml::table& table, std::string file, std::string prefix)
+    : ConfigTable(table, std::move(file), std::move(prefix), nullptr) {}
+
+ConfigTable::ConfigTable(std::shared_ptr<const toml::table> document, std::string file)
+    : ConfigTable(*document, std::move(file), "", document) {}
+
+ConfigTable::ConfigTable(const toml::table& table, std::string file, std::string prefix,
+                         std::shared_ptr<const toml::table> document)
     : table_(&table), file_(std::move(file)), prefix_(std::move(prefix)),
-      used_(std::make_shared<std::set<std::string>>()) {}
+      document_(std::move(document)), used_(std::make_shared<std::set<std::string>>()) {}
 
 std::string ConfigTable::where(const std::string& key) const {
     const toml::node* n = node(key);
@@ -262,7 +269,7 @@ std::optional<ConfigTable> ConfigTable::table(const std::string& key) const {
     if (!n) return std::nullopt;
     const toml::table* t = n->as_table();
     if (!t) fail(key, "expected a table, found " + type_name(*n));
-    return ConfigTable(*t, file_, prefix_.empty() ? key : prefix_ + "." + key);
+    return ConfigTable(*t, file_, prefix_.empty() ? key : prefix_ + "." + key, document_);
 }
 
 std::vector<ConfigTable> ConfigTable::tables(const std::string& key) const {
@@ -275,8 +282,9 @@ std::vector<ConfigTable> ConfigTable::tables(const std::string& key) const {
     for (const auto& e : *arr) {
         const toml::table* t = e.as_table();
         if (!t) fail(key, "expected an array of tables ([[" + key + "]])");
-        out.emplace_back(*t, file_,
-                         (prefix_.empty() ? key : prefix_ + "." + key) + "." + std::to_string(i++));
+        out.push_back(ConfigTable(
+            *t, file_, (prefix_.empty() ? key : prefix_ + "." + key) + "." + std::to_string(i++),
+            document_));
     }
     return out;
 }

@@ -21,6 +21,9 @@ inline constexpr long max_boundary_layers = 32;
 class ConfigTable {
 public:
     ConfigTable(const toml::table& table, std::string file, std::string prefix);
+    // The root table of a whole document, which this table and the tables read from it keep
+    // alive (so that a block can be read after the reader that found it has returned).
+    ConfigTable(std::shared_ptr<const toml::table> document, std::string file);
 
     bool has(const std::string& key) const;
     Real real(const std::string& key) const;
@@ -61,8 +64,11 @@ public:
 private:
     const toml::node* node(const std::string& key) const;
     const toml::node& require(const std::string& key) const;
+    ConfigTable(const toml::table& table, std::string file, std::string prefix,
+                std::shared_ptr<const toml::table> document);
     const toml::table* table_;
     std::string file_, prefix_;
+    std::shared_ptr<const toml::table> document_; // null: the caller keeps the table alive
     std::shared_ptr<std::set<std::string>> used_;
 };
 

@@ -1,11 +1,17 @@
 #include "debrisflow/probes/body_probe.hpp"
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/rigid/body_solver.hpp"
+#include <algorithm>
 
 namespace debrisflow::probes {
 
-BodyProbe::BodyProbe(const io::ProbeSpec& spec, const io::CaseSpec&)
-    : Probe(spec.name, spec.every), body_(spec.body) {}
+std::unique_ptr<Probe> BodyProbe::from_config(const ProbeSetup& s) {
+    const std::string body = s.t.string("body");
+    if (std::none_of(s.c.rigid.bodies.begin(), s.c.rigid.bodies.end(),
+                     [&](const auto& b) { return b.name == body; }))
+        s.t.fail("body", "no [[body]] named \"" + body + "\"");
+    return std::make_unique<BodyProbe>(s.name(), s.every(), body);
+}
 
 std::vector<std::string> BodyProbe::columns() const {
     return {"x [m]",        "y [m]",        "z [m]",          "point_x [m]",    "point_y [m]",

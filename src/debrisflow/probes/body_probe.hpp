@@ -8,7 +8,11 @@ namespace debrisflow::probes {
 // yaw), and the fluid and contact forces on it, separately.
 class BodyProbe : public Probe {
 public:
-    BodyProbe(const io::ProbeSpec& spec, const io::CaseSpec& c);
+    static constexpr std::string_view type_name = "body";
+    static std::unique_ptr<Probe> from_config(const ProbeSetup& s); // keys: body
+    BodyProbe(std::string name, Real every, std::string body)
+        : Probe(std::move(name), every), body_(std::move(body)) {}
+    const std::string& body() const { return body_; }
     std::vector<std::string> columns() const override;
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
 

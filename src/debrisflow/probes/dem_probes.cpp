@@ -12,9 +12,34 @@ bool inside(Vec3 p, Vec3 lo, Vec3 hi) {
 }
 } // namespace
 
-SectionProbe::SectionProbe(const io::ProbeSpec& s, const io::CaseSpec& c)
-    : Probe(s.name, s.every), lo_(s.min), hi_(s.max), bed_(s.bed),
-      width_(c.dim == 2 ? c.dem.thickness : s.max.y - s.min.y) {}
+std::unique_ptr<Probe> SectionProbe::from_config(const ProbeSetup& s) {
+    s.require(s.c.has_dem, "[[grains]]");
+    const auto [lo, hi] = s.box(-1e30, 1e30);
+    const Real bed = s.t.real("bed", lo.z);
+    return std::make_unique<SectionProbe>(s.name(), s.every(), lo, hi, bed,
+                                          s.c.dim == 2 ? s.c.dem.thickness : hi.y - lo.y);
+}
+
+std::unique_ptr<Probe> KineticEnergyProbe::from_config(const ProbeSetup& s) {
+    s.require(s.c.has_dem, "[[grains]]");
+    const auto [lo, hi] = s.box(-1e30, 1e30);
+    return std::make_unique<KineticEnergyProbe>(s.name(), s.every(), lo, hi);
+}
+
+std::unique_ptr<Probe> RunupProbe::from_config(const ProbeSetup& s) {
+    s.require(s.c.has_dem, "[[grains]]");
+    const int wall = s.wall();
+    return std::make_unique<RunupProbe>(s.name(), s.every(), wall,
+                                        s.t.real("bed", s.c.domain.lo.z));
+}
+
+std::unique_ptr<Probe> MassFluxProbe::from_config(const ProbeSetup& s) {
+    s.require(s.c.has_dem, "[[grains]]");
+    const Vec3 point = s.t.vec3("point", s.c.dim);
+    const Vec3 n = s.direction("normal");
+    return std::make_unique<MassFluxProbe>(s.name(), s.every(), point, n,
+                                           SolidCrossing::wrap_distance(s.c, n));
+}
 
 std::vector<Real> SectionProbe::sample(Real, const ProbeContext& ctx) {
     const auto& g = ctx.dem->grains();
@@ -88,14 +113,6 @@ std::vector<Real> RunupProbe::sample(Real, const ProbeContext& ctx) {
     }
     return {top};
 }
-
-MassFluxProbe::MassFluxProbe(const io::ProbeSpec& s, const io::CaseSpec& c)
-    : Probe(s.name, s.every), crossing_(s.position, s.normal, [&] {
-          int a = 0;
-          for (int k = 1; k < 3; ++k)
-              if (std::abs(s.normal[k]) > std::abs(s.normal[a])) a = k;
-          return Real(0.5) * (c.domain.hi[a] - c.domain.lo[a]);
-      }()) {}
 
 std::vector<Real> MassFluxProbe::sample(Real t, const ProbeContext& ctx) {
     crossing_.update(ctx);

@@ -13,7 +13,11 @@ namespace debrisflow::probes {
 // fraction gives a depth independent of the dilute surface layer.
 class SectionProbe : public Probe {
 public:
-    SectionProbe(const io::ProbeSpec& s, const io::CaseSpec& c);
+    static constexpr std::string_view type_name = "section";
+    static std::unique_ptr<Probe> from_config(const ProbeSetup& s); // keys: min, max, bed
+    // width: the window's extent across the flow (2D: the grains' thickness).
+    SectionProbe(std::string name, Real every, Vec3 lo, Vec3 hi, Real bed, Real width)
+        : Probe(std::move(name), every), lo_(lo), hi_(hi), bed_(bed), width_(width) {}
     std::vector<std::string> columns() const override {
         return {"h [m]",        "v [m/s]",    "rho_bulk [kg/m3]", "Fr [-]",
                 "N_savage [-]", "grains [-]", "h_solid [m]"};
@@ -29,8 +33,10 @@ private:
 // rotational sum 1/2 I w^2; a clump counts once, by its centre of mass (1/2 M V^2, 1/2 w . L).
 class KineticEnergyProbe : public Probe {
 public:
-    explicit KineticEnergyProbe(const io::ProbeSpec& s)
-        : Probe(s.name, s.every), lo_(s.min), hi_(s.max) {}
+    static constexpr std::string_view type_name = "kinetic_energy";
+    static std::unique_ptr<Probe> from_config(const ProbeSetup& s); // keys: min, max
+    KineticEnergyProbe(std::string name, Real every, Vec3 lo, Vec3 hi)
+        : Probe(std::move(name), every), lo_(lo), hi_(hi) {}
     std::vector<std::string> columns() const override {
         return {"E_kin [J]", "E_rot [J]", "grains [-]"};
     }
@@ -44,8 +50,10 @@ private:
 // wall (within 5 % of their radius of it); the summary's peak is the maximum run-up.
 class RunupProbe : public Probe {
 public:
-    RunupProbe(const io::ProbeSpec& s, int wall)
-        : Probe(s.name, s.every), wall_(wall), bed_(s.bed) {}
+    static constexpr std::string_view type_name = "runup";
+    static std::unique_ptr<Probe> from_config(const ProbeSetup& s); // keys: wall, bed
+    RunupProbe(std::string name, Real every, int wall, Real bed)
+        : Probe(std::move(name), every), wall_(wall), bed_(bed) {}
     std::vector<std::string> columns() const override { return {"runup [m]"}; }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
 
@@ -59,7 +67,11 @@ private:
 // net mass in the +normal direction and its rate over the sampling interval.
 class MassFluxProbe : public Probe {
 public:
-    MassFluxProbe(const io::ProbeSpec& s, const io::CaseSpec& c);
+    static constexpr std::string_view type_name = "mass_flux";
+    static std::unique_ptr<Probe> from_config(const ProbeSetup& s); // keys: point, normal
+    // wrap: a jump larger than this across the plane is a periodic wrap.
+    MassFluxProbe(std::string name, Real every, Vec3 point, Vec3 normal, Real wrap)
+        : Probe(std::move(name), every), crossing_(point, normal, wrap) {}
     std::vector<std::string> columns() const override { return {"flux [kg/s]", "cumulative [kg]"}; }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
     void extra_state(checkpoint::Archive& ar) override;

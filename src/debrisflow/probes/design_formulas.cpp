@@ -1,6 +1,8 @@
 #include "debrisflow/probes/design_formulas.hpp"
 #include "debrisflow/dem/materials.hpp"
 #include "debrisflow/io/named.hpp"
+#include "debrisflow/probes/body_probe.hpp"
+#include "debrisflow/probes/wall_force_probe.hpp"
 #include <algorithm>
 #include <cmath>
 
@@ -32,12 +34,13 @@ std::vector<DesignCheck> design_checks(const io::CaseSpec& c,
                                        const std::vector<std::unique_ptr<Probe>>& probes,
                                        const std::vector<BodyInfo>& bodies) {
     std::vector<DesignCheck> out;
-    for (const auto& spec : c.probes) {
-        if (spec.type != "wall_force" || (spec.approach.empty() && spec.boulder.empty())) continue;
-        const Probe* wf = find(probes, spec.name);
+    for (const auto& probe : probes) {
+        const auto* wf = dynamic_cast<const WallForceProbe*>(probe.get());
         if (!wf || !wf->has_samples()) continue;
+        const auto& spec = wf->companions();
+        if (spec.approach.empty() && spec.boulder.empty()) continue;
         DesignCheck d;
-        d.probe = spec.name;
+        d.probe = wf->name();
         const int fn = column(*wf, "Fn");
         d.f_peak = wf->peaks()[std::size_t(fn)];
         d.f_peak_time = wf->peak_time(std::size_t(fn));
@@ -60,11 +63,9 @@ std::vector<DesignCheck> design_checks(const io::CaseSpec& c,
                 d.note += "the approach probe saw no flow; ";
         }
         if (!spec.boulder.empty()) {
-            const auto& bp = *std::find_if(c.probes.begin(), c.probes.end(),
-                                           [&](const auto& q) { return q.name == spec.boulder; });
-            const Probe* bprobe = find(probes, spec.boulder);
+            const auto* bprobe = dynamic_cast<const BodyProbe*>(find(probes, spec.boulder));
             const auto b = std::find_if(bodies.begin(), bodies.end(),
-                                        [&](const auto& x) { return x.name == bp.body; });
+                                        [&](const auto& x) { return x.name == bprobe->body(); });
             const int vx = column(*bprobe, "vx");
             for (const auto& row : bprobe->history()) {
                 const Real* v = &row[std::size_t(vx) + 1];
@@ -72,10 +73,9 @@ std::vector<DesignCheck> design_checks(const io::CaseSpec& c,
                     std::max(d.v_impact, std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
             }
             // Wall material: the wall's own, or the body's (as the contact laws default).
-            const io::WallSpec* wall = io::find_named(c.walls, spec.wall);
-            const int wm = wall && !wall->material.empty()
-                               ? io::index_named(c.dem.materials, wall->material)
-                               : -1;
+            const io::WallSpec& wall = c.walls[std::size_t(wf->wall())];
+            const int wm =
+                wall.material.empty() ? -1 : io::index_named(c.dem.materials, wall.material);
             const auto& mb = c.dem.materials[std::size_t(b->material)];
             const auto& mw = c.dem.materials[std::size_t(wm >= 0 ? wm : b->material)];
             if (c.dim == 2) {
@@ -95,7 +95,7 @@ std::vector<DesignCheck> design_checks(const io::CaseSpec& c,
                     for (const auto& row : wf->history()) {
                         const Vec3 f{row[std::size_t(fbx) + 1], row[std::size_t(fbx) + 2],
                                      row[std::size_t(fbx) + 3]};
-                        d.f_bodies_peak = std::max(d.f_bodies_peak, dot(f, spec.normal));
+                        d.f_bodies_peak = std::max(d.f_bodies_peak, dot(f, wf->normal()));
                     }
             }
         }

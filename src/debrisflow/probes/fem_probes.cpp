@@ -7,8 +7,25 @@
 
 namespace debrisflow::probes {
 
-FemDisplacementProbe::FemDisplacementProbe(const io::ProbeSpec& s, const io::CaseSpec& c)
-    : Probe(s.name, s.every), set_(s.set), position_(s.position), dim_(c.dim) {}
+namespace {
+bool has_solid(const io::CaseSpec& c, const std::string& name) {
+    return std::any_of(c.fem.solids.begin(), c.fem.solids.end(),
+                       [&](const auto& s) { return s.name == name; });
+}
+} // namespace
+
+std::unique_ptr<Probe> FemDisplacementProbe::from_config(const ProbeSetup& s) {
+    s.require(s.c.has_fem(), "a [[solid]]");
+    if (!s.t.has("set"))
+        return std::make_unique<FemDisplacementProbe>(s.name(), s.every(), "",
+                                                      s.t.vec3("position", s.c.dim), s.c.dim);
+    const std::string set = s.t.string("set");
+    const std::string solid = set.substr(0, set.find('.'));
+    if (!has_solid(s.c, solid))
+        s.t.fail("set", "no [[solid]] named \"" + solid +
+                            "\" (a set is \"<solid>.<set>\" or \"<solid>\")");
+    return std::make_unique<FemDisplacementProbe>(s.name(), s.every(), set, Vec3{}, s.c.dim);
+}
 
 std::vector<std::string> FemDisplacementProbe::columns() const {
     if (dim_ == 2) return {"ux [m]", "uz [m]", "u [m]"};
@@ -35,8 +52,10 @@ std::vector<Real> FemDisplacementProbe::sample(Real, const ProbeContext& ctx) {
     return {u.x, u.y, u.z, norm(u)};
 }
 
-FemForceProbe::FemForceProbe(const io::ProbeSpec& s, const io::CaseSpec& c)
-    : Probe(s.name, s.every), unit_(c.dim == 2 ? "N/m" : "N") {}
+std::unique_ptr<Probe> FemForceProbe::from_config(const ProbeSetup& s) {
+    s.require(s.c.has_fem(), "a [[solid]]");
+    return std::make_unique<FemForceProbe>(s.name(), s.every(), s.c.dim);
+}
 
 std::vector<std::string> FemForceProbe::columns() const {
     std::vector<std::string> c;
@@ -58,9 +77,21 @@ std::vector<Real> FemForceProbe::sample(Real, const ProbeContext& ctx) {
     return out;
 }
 
-FemFaceLoadProbe::FemFaceLoadProbe(const io::ProbeSpec& s, const io::CaseSpec& c)
-    : Probe(s.name, s.every), set_(s.set), unit_(c.dim == 2 ? "N/m" : "N"),
-      normal_((1 / norm(s.normal)) * s.normal), axis_(s.axis), bins_(s.panels_u) {}
+std::unique_ptr<Probe> FemFaceLoadProbe::from_config(const ProbeSetup& s) {
+    s.require(s.c.has_fem(), "a [[solid]]");
+    const std::string set = s.t.string("set");
+    const auto dot = set.find('.');
+    if (dot == std::string::npos || !has_solid(s.c, set.substr(0, dot)))
+        s.t.fail("set", "needs \"<solid>.<set>\" naming a [[solid]] (e.g. \"dam.upstream\")");
+    const Vec3 normal = s.direction("normal");
+    const std::string axis = s.t.choice("axis", {"x", "y", "z"}, "z");
+    const int bins = int(s.t.integer("bins", 5, 1, 100));
+    return std::make_unique<FemFaceLoadProbe>(s.name(), s.every(), set, normal,
+                                              axis == "x"   ? 0
+                                              : axis == "y" ? 1
+                                                            : 2,
+                                              bins, s.c.dim);
+}
 
 std::vector<std::string> FemFaceLoadProbe::columns() const {
     // Band 1 is the lowest along the axis (equal bands between the set's extreme nodes).

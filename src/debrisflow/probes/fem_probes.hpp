@@ -7,7 +7,11 @@ namespace debrisflow::probes {
 // e.g. "dam.crest") or at the node nearest to `position` [m].
 class FemDisplacementProbe : public Probe {
 public:
-    FemDisplacementProbe(const io::ProbeSpec& s, const io::CaseSpec& c);
+    static constexpr std::string_view type_name = "fem_displacement";
+    static std::unique_ptr<Probe> from_config(const ProbeSetup& s); // keys: set or position
+    // set: "<solid>.<set>" or "<solid>" ("": the node nearest to position).
+    FemDisplacementProbe(std::string name, Real every, std::string set, Vec3 position, int dim)
+        : Probe(std::move(name), every), set_(std::move(set)), position_(position), dim_(dim) {}
     std::vector<std::string> columns() const override;
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
 
@@ -22,7 +26,10 @@ private:
 // their sum [N] (2D: N/m); the grains' load is their mean over the step (impulse / dt).
 class FemForceProbe : public Probe {
 public:
-    FemForceProbe(const io::ProbeSpec& s, const io::CaseSpec& c);
+    static constexpr std::string_view type_name = "fem_force";
+    static std::unique_ptr<Probe> from_config(const ProbeSetup& s); // no keys
+    FemForceProbe(std::string name, Real every, int dim)
+        : Probe(std::move(name), every), unit_(dim == 2 ? "N/m" : "N") {}
     std::vector<std::string> columns() const override;
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
 
@@ -36,7 +43,12 @@ private:
 // and the total.
 class FemFaceLoadProbe : public Probe {
 public:
-    FemFaceLoadProbe(const io::ProbeSpec& s, const io::CaseSpec& c);
+    static constexpr std::string_view type_name = "fem_face_load";
+    static std::unique_ptr<Probe> from_config(const ProbeSetup& s); // keys: set, normal, axis, bins
+    FemFaceLoadProbe(std::string name, Real every, std::string set, Vec3 normal, int axis, int bins,
+                     int dim)
+        : Probe(std::move(name), every), set_(std::move(set)), unit_(dim == 2 ? "N/m" : "N"),
+          normal_(normal), axis_(axis), bins_(bins) {}
     std::vector<std::string> columns() const override;
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
 

@@ -10,15 +10,15 @@ namespace {
 bool in_box(Vec3 p, Vec3 lo, Vec3 hi) {
     return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y && p.z >= lo.z && p.z <= hi.z;
 }
-// Half the domain's extent along the plane normal's dominant axis.
-Real half_extent(const io::CaseSpec& c, Vec3 n) {
+constexpr std::uint64_t body_key = std::uint64_t(1) << 40;
+} // namespace
+
+Real SolidCrossing::wrap_distance(const io::CaseSpec& c, Vec3 n) {
     int a = 0;
     for (int k = 1; k < 3; ++k)
         if (std::abs(n[k]) > std::abs(n[a])) a = k;
     return Real(0.5) * (c.domain.hi[a] - c.domain.lo[a]);
 }
-constexpr std::uint64_t body_key = std::uint64_t(1) << 40;
-} // namespace
 
 void SolidCrossing::cross(std::uint64_t key, Vec3 x, Real m, Real v) {
     const Real s = dot(x - point_, n_);
@@ -54,10 +54,17 @@ void SolidCrossing::update(const ProbeContext& ctx) {
     }
 }
 
-DischargeProbe::DischargeProbe(const io::ProbeSpec& s, const io::CaseSpec& c)
-    : Probe(s.name, s.every), point_(s.position), n_(s.normal), dp_(c.dp), rho0_(c.sph.rho0),
+std::unique_ptr<Probe> DischargeProbe::from_config(const ProbeSetup& s) {
+    const Vec3 point = s.t.vec3("point", s.c.dim);
+    return std::make_unique<DischargeProbe>(s.name(), s.every(), point, s.direction("normal"), s.c);
+}
+
+DischargeProbe::DischargeProbe(std::string name, Real every, Vec3 point, Vec3 normal,
+                               const io::CaseSpec& c)
+    : Probe(std::move(name), every), point_(point), n_(normal), dp_(c.dp), rho0_(c.sph.rho0),
       fluid_(!c.fluids.empty()), solids_(c.has_dem || c.has_bodies()),
-      unit_(c.dim == 2 ? "/m" : ""), solid_(s.position, s.normal, half_extent(c, s.normal)) {}
+      unit_(c.dim == 2 ? "/m" : ""),
+      solid_(point, normal, SolidCrossing::wrap_distance(c, normal)) {}
 
 std::vector<std::string> DischargeProbe::columns() const {
     std::vector<std::string> c;
@@ -105,9 +112,42 @@ std::vector<Real> DischargeProbe::sample(Real t, const ProbeContext& ctx) {
     return out;
 }
 
-TrappingProbe::TrappingProbe(const io::ProbeSpec& s, const io::CaseSpec& c)
-    : Probe(s.name, s.every), up_(s.position, s.normal, half_extent(c, s.normal)),
-      down_(s.point_b, s.normal, half_extent(c, s.normal)), t0_(s.t0), t1_(s.t1) {}
+std::unique_ptr<Probe> TrappingProbe::from_config(const ProbeSetup& s) {
+    s.require(s.c.has_dem || s.c.has_bodies(), "grains or bodies");
+    const Vec3 up = s.t.vec3("upstream", s.c.dim);
+    const Vec3 down = s.t.vec3("downstream", s.c.dim);
+    const Vec3 n = s.direction("normal", {1, 0, 0});
+    if (!(dot(down - up, n) > 0))
+        s.t.fail("downstream", "must lie downstream (along normal) of the upstream plane");
+    const auto w = s.t.reals("window");
+    if (w.size() != 2 || !(w[1] > w[0]) || w[0] < 0)
+        s.t.fail("window", "expected [t_start, t_end] with t_end > t_start >= 0 [s]");
+    return std::make_unique<TrappingProbe>(s.name(), s.every(), up, down, n, w[0], w[1], s.c);
+}
+
+TrappingProbe::TrappingProbe(std::string name, Real every, Vec3 upstream, Vec3 downstream,
+                             Vec3 normal, Real t0, Real t1, const io::CaseSpec& c)
+    : Probe(std::move(name), every), up_(upstream, normal, SolidCrossing::wrap_distance(c, normal)),
+      down_(downstream, normal, SolidCrossing::wrap_distance(c, normal)), t0_(t0), t1_(t1) {}
+
+std::unique_ptr<Probe> DepositProbe::from_config(const ProbeSetup& s) {
+    const auto [lo, hi] = s.box(-1e30, 1e30);
+    return std::make_unique<DepositProbe>(s.name(), s.every(), lo, hi, s.c.sph.rho0);
+}
+
+std::unique_ptr<Probe> FlowSectionProbe::from_config(const ProbeSetup& s) {
+    s.require(!s.c.fluids.empty(), "a fluid");
+    const auto [lo, hi] = s.box(-1e30, 1e30);
+    const Real bed = s.t.real("bed", lo.z);
+    return std::make_unique<FlowSectionProbe>(s.name(), s.every(), lo, hi, bed, s.c);
+}
+
+std::unique_ptr<Probe> FluidRunupProbe::from_config(const ProbeSetup& s) {
+    s.require(!s.c.fluids.empty(), "a fluid");
+    const int wall = s.wall();
+    return std::make_unique<FluidRunupProbe>(s.name(), s.every(), s.c.walls[std::size_t(wall)],
+                                             s.t.real("bed", s.c.domain.lo.z), s.c);
+}
 
 std::vector<Real> TrappingProbe::sample(Real t, const ProbeContext& ctx) {
     up_.update(ctx);

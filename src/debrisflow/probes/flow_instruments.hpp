@@ -10,6 +10,9 @@ namespace debrisflow::probes {
 class SolidCrossing {
 public:
     SolidCrossing(Vec3 point, Vec3 normal, Real wrap) : point_(point), n_(normal), wrap_(wrap) {}
+    // The wrap distance of a plane with normal n in the case's domain: half the domain's
+    // extent along n's dominant axis.
+    static Real wrap_distance(const io::CaseSpec& c, Vec3 n);
     void update(const ProbeContext& ctx);
     Real mass() const { return mass_; }
     Real volume() const { return volume_; }
@@ -30,7 +33,9 @@ private:
 // the sampling interval.
 class DischargeProbe : public Probe {
 public:
-    DischargeProbe(const io::ProbeSpec& s, const io::CaseSpec& c);
+    static constexpr std::string_view type_name = "discharge";
+    static std::unique_ptr<Probe> from_config(const ProbeSetup& s); // keys: point, normal
+    DischargeProbe(std::string name, Real every, Vec3 point, Vec3 normal, const io::CaseSpec& c);
     std::vector<std::string> columns() const override;
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
     void extra_state(checkpoint::Archive& ar) override;
@@ -49,7 +54,11 @@ private:
 // crossing the upstream and the downstream plane within the window [t0, t1].
 class TrappingProbe : public Probe {
 public:
-    TrappingProbe(const io::ProbeSpec& s, const io::CaseSpec& c);
+    static constexpr std::string_view type_name = "trapping";
+    // keys: upstream, downstream (points), normal, window [t0, t1]
+    static std::unique_ptr<Probe> from_config(const ProbeSetup& s);
+    TrappingProbe(std::string name, Real every, Vec3 upstream, Vec3 downstream, Vec3 normal,
+                  Real t0, Real t1, const io::CaseSpec& c);
     std::vector<std::string> columns() const override {
         return {"M_up [kg]", "M_down [kg]", "E [-]"};
     }
@@ -67,8 +76,10 @@ private:
 // bodies whose centre is inside; volume = mass / solid density) and fluid volume (m / rho0).
 class DepositProbe : public Probe {
 public:
-    DepositProbe(const io::ProbeSpec& s, const io::CaseSpec& c)
-        : Probe(s.name, s.every), lo_(s.min), hi_(s.max), rho0_(c.sph.rho0) {}
+    static constexpr std::string_view type_name = "deposit";
+    static std::unique_ptr<Probe> from_config(const ProbeSetup& s); // keys: min, max
+    DepositProbe(std::string name, Real every, Vec3 lo, Vec3 hi, Real rho0)
+        : Probe(std::move(name), every), lo_(lo), hi_(hi), rho0_(rho0) {}
     std::vector<std::string> columns() const override {
         return {"solid_volume [m3]", "solid_mass [kg]", "fluid_volume [m3]"};
     }
@@ -84,8 +95,11 @@ private:
 // discharge q = v h and Froude number v / sqrt(|g| h cos theta).
 class FlowSectionProbe : public Probe {
 public:
-    FlowSectionProbe(const io::ProbeSpec& s, const io::CaseSpec& c)
-        : Probe(s.name, s.every), lo_(s.min), hi_(s.max), bed_(s.bed), dp_(c.dp),
+    static constexpr std::string_view type_name = "flow_section";
+    static std::unique_ptr<Probe> from_config(const ProbeSetup& s); // keys: min, max, bed
+    FlowSectionProbe(std::string name, Real every, Vec3 lo, Vec3 hi, Real bed,
+                     const io::CaseSpec& c)
+        : Probe(std::move(name), every), lo_(lo), hi_(hi), bed_(bed), dp_(c.dp),
           gravity_(c.sph.gravity) {}
     std::vector<std::string> columns() const override {
         return {"h [m]", "v [m/s]", "q [m2/s]", "Fr [-]"};
@@ -102,8 +116,11 @@ private:
 // wall's bounding box (for grains use `runup`).
 class FluidRunupProbe : public Probe {
 public:
-    FluidRunupProbe(const io::ProbeSpec& s, const io::WallSpec& w, const io::CaseSpec& c)
-        : Probe(s.name, s.every), lo_(w.shape.min), hi_(w.shape.max), bed_(s.bed), dp_(c.dp),
+    static constexpr std::string_view type_name = "fluid_runup";
+    static std::unique_ptr<Probe> from_config(const ProbeSetup& s); // keys: wall, bed
+    FluidRunupProbe(std::string name, Real every, const io::WallSpec& w, Real bed,
+                    const io::CaseSpec& c)
+        : Probe(std::move(name), every), lo_(w.shape.min), hi_(w.shape.max), bed_(bed), dp_(c.dp),
           dim_(c.dim) {}
     std::vector<std::string> columns() const override { return {"runup [m]"}; }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;

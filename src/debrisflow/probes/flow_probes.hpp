@@ -92,8 +92,15 @@ private:
 // (domain.exit = "remove") so far, by phase: count and mass, then the count through each face.
 class DomainExitProbe : public Probe {
 public:
-    DomainExitProbe(const io::ProbeSpec& s, bool per_metre)
-        : Probe(s.name, s.every), unit_(per_metre ? "/m" : "") {}
+    static constexpr std::string_view type_name = "domain_exit";
+    static std::unique_ptr<Probe> from_config(const ProbeSetup& s) { // no keys
+        if (s.c.domain_exit.policy != "remove")
+            s.t.fail("type", "a domain_exit probe counts what domain.exit = \"remove\" removes; "
+                             "domain.exit is \"stop\"");
+        return std::make_unique<DomainExitProbe>(s.name(), s.every(), s.c.dim == 2);
+    }
+    DomainExitProbe(std::string name, Real every, bool per_metre)
+        : Probe(std::move(name), every), unit_(per_metre ? "/m" : "") {}
     std::vector<std::string> columns() const override {
         std::vector<std::string> c = {"fluid_count [-]", "fluid_mass [kg" + unit_ + "]",
                                       "grain_count [-]", "grain_mass [kg]"};

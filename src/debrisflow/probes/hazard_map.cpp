@@ -9,9 +9,27 @@
 
 namespace debrisflow::probes {
 
-HazardMapProbe::HazardMapProbe(const io::ProbeSpec& s, const io::CaseSpec& c)
-    : Probe(s.name, s.every), lo_(s.min), hi_(s.max), nx_(s.panels_u),
-      ny_(c.dim == 3 ? s.panels_v : 1), dim_(c.dim), bed_(s.bed), half_dp_(Real(0.5) * c.dp),
+std::unique_ptr<Probe> HazardMapProbe::from_config(const ProbeSetup& s) {
+    s.require(!s.c.fluids.empty(), "a fluid");
+    // A plan grid over [min, max] (2D: along x); the columns count fluid between min.z and
+    // max.z; depths from `bed` (default min.z).
+    const auto [lo, hi] = s.box(0, 1);
+    const Real bed = s.t.real("bed", lo.z);
+    const auto n = s.t.reals("cells");
+    const std::size_t plan = s.c.dim == 3 ? 2 : 1;
+    if (n.size() != plan || std::any_of(n.begin(), n.end(), [](Real v) {
+            return !(v >= 1 && v <= 10000 && v == std::floor(v));
+        }))
+        s.t.fail("cells", s.c.dim == 3 ? "expected [n_x, n_y], whole numbers from 1 to 10000"
+                                       : "expected [n_x], a whole number from 1 to 10000");
+    return std::make_unique<HazardMapProbe>(s.name(), s.every(), lo, hi, int(n[0]),
+                                            s.c.dim == 3 ? int(n[1]) : 1, bed, s.c);
+}
+
+HazardMapProbe::HazardMapProbe(std::string name, Real every, Vec3 lo, Vec3 hi, int nx, int ny,
+                               Real bed, const io::CaseSpec& c)
+    : Probe(std::move(name), every), lo_(lo), hi_(hi), nx_(nx), ny_(c.dim == 3 ? ny : 1),
+      dim_(c.dim), bed_(bed), half_dp_(Real(0.5) * c.dp),
       h_max_(std::size_t(nx_) * std::size_t(ny_), 0), v_max_(h_max_), f_max_(h_max_) {}
 
 std::vector<Real> HazardMapProbe::sample(Real, const ProbeContext& ctx) {

@@ -16,7 +16,11 @@ namespace debrisflow::probes {
 // run leaves the map so far. The CSV series holds the largest of each over the cells.
 class HazardMapProbe : public Probe {
 public:
-    HazardMapProbe(const io::ProbeSpec& s, const io::CaseSpec& c);
+    static constexpr std::string_view type_name = "hazard_map";
+    static std::unique_ptr<Probe> from_config(const ProbeSetup& s); // keys: min, max, cells, bed
+    // nx x ny cells over [lo, hi] (2D: ny = 1).
+    HazardMapProbe(std::string name, Real every, Vec3 lo, Vec3 hi, int nx, int ny, Real bed,
+                   const io::CaseSpec& c);
     std::vector<std::string> columns() const override {
         return {"h_max [m]", "v_max [m/s]", "momentum_flux_max [N/m]"};
     }

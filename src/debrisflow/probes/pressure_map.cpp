@@ -9,10 +9,37 @@
 
 namespace debrisflow::probes {
 
-PressureMapProbe::PressureMapProbe(const io::ProbeSpec& s, int wall, const io::WallSpec& w,
-                                   const io::CaseSpec& c)
-    : Probe(s.name, s.every), wall_(wall), axis_(s.axis), nu_(s.panels_u), nv_(s.panels_v),
-      normal_(s.normal), lo_(w.shape.min), hi_(w.shape.max), dp_(c.dp), dim_(c.dim) {
+std::unique_ptr<Probe> PressureMapProbe::from_config(const ProbeSetup& s) {
+    const auto& c = s.c;
+    s.require(!c.fluids.empty() || c.has_dem || c.has_bodies(), "a fluid, grains or bodies");
+    const int wall = s.wall();
+    const auto& w = c.walls[std::size_t(wall)];
+    if (w.type == "plane" || w.type == "stl")
+        s.t.fail("wall", "a pressure map tiles a face of the wall's bounding box; wall \"" +
+                             w.name + "\" is a " + w.type +
+                             " (use a box, an open_tank or a [[structure]])");
+    const std::string a = s.t.choice("axis", {"x", "y", "z"}, "x");
+    const int axis = a == "x" ? 0 : (a == "y" ? 1 : 2);
+    const Vec3 normal = s.t.vec3("normal", c.dim, {});
+    if (!(std::abs(norm(normal) - 1) < 1e-9) || std::abs(normal[axis]) != 1)
+        s.t.fail("normal", "must be the unit vector along axis, pointing into the fluid");
+    const auto n = s.t.reals("panels");
+    if (n.size() != 2 || std::any_of(n.begin(), n.end(), [](Real v) {
+            return !(v >= 1 && v <= 1000 && v == std::floor(v));
+        }))
+        s.t.fail("panels",
+                 "expected [n_u, n_v] panels over the face, whole numbers from 1 to 1000");
+    // 2D: one row across the unit width
+    return std::make_unique<PressureMapProbe>(s.name(), s.every(), wall, axis, normal, int(n[0]),
+                                              c.dim == 2 ? 1 : int(n[1]), c);
+}
+
+PressureMapProbe::PressureMapProbe(std::string name, Real every, int wall, int axis, Vec3 normal,
+                                   int nu, int nv, const io::CaseSpec& c)
+    : Probe(std::move(name), every), wall_(wall), axis_(axis), nu_(nu), nv_(nv), normal_(normal),
+      lo_(c.walls[std::size_t(wall)].shape.min), hi_(c.walls[std::size_t(wall)].shape.max),
+      dp_(c.dp), dim_(c.dim) {
+    const auto& w = c.walls[std::size_t(wall)];
     // The face's axes: the two others in order (2D: u = the in-plane one, v = y, one panel).
     const int others[3][2] = {{1, 2}, {0, 2}, {0, 1}};
     u_ = others[axis_][0], v_ = others[axis_][1];

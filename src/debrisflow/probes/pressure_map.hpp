@@ -18,8 +18,13 @@ namespace debrisflow::probes {
 // same pressure), or the panel's geometric area where no particle tiles it (no fluid).
 class PressureMapProbe : public Probe {
 public:
-    PressureMapProbe(const io::ProbeSpec& s, int wall, const io::WallSpec& w,
+    static constexpr std::string_view type_name = "pressure_map";
+    static std::unique_ptr<Probe>
+    from_config(const ProbeSetup& s); // keys: wall, axis, normal, panels
+    // The face of wall `wall` (c.walls) normal to `axis`, tiled by nu x nv panels.
+    PressureMapProbe(std::string name, Real every, int wall, int axis, Vec3 normal, int nu, int nv,
                      const io::CaseSpec& c);
+    int contact_wall() const override { return wall_; }
     std::vector<std::string> columns() const override;
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
     void open_extra(const std::string& dir) override;

@@ -1,15 +1,6 @@
 #include "debrisflow/probes/probe.hpp"
 #include "debrisflow/checkpoint/archive.hpp"
 #include "debrisflow/core/error.hpp"
-#include "debrisflow/probes/body_probe.hpp"
-#include "debrisflow/probes/dem_probes.hpp"
-#include "debrisflow/probes/fem_probes.hpp"
-#include "debrisflow/probes/flow_instruments.hpp"
-#include "debrisflow/probes/flow_probes.hpp"
-#include "debrisflow/probes/hazard_map.hpp"
-#include "debrisflow/probes/pressure_map.hpp"
-#include "debrisflow/probes/sph_probes.hpp"
-#include "debrisflow/probes/wall_force_probe.hpp"
 #include <filesystem>
 #include <fmt/format.h>
 #include <limits>
@@ -120,35 +111,6 @@ Real Probe::peak_window_mean(std::size_t column, Real window) const {
         v.push_back(row[column + 1]);
     }
     return peak_moving_mean(t, v, window);
-}
-
-std::unique_ptr<Probe> make_probe(const io::ProbeSpec& s, const io::CaseSpec& c) {
-    if (s.type == "pressure") return std::make_unique<PressureProbe>(s);
-    if (s.type == "velocity") return std::make_unique<VelocityProbe>(s);
-    if (s.type == "gauge") return std::make_unique<GaugeProbe>(s, c);
-    if (s.type == "front") return std::make_unique<FrontProbe>(s);
-    if (s.type == "section") return std::make_unique<SectionProbe>(s, c);
-    if (s.type == "kinetic_energy") return std::make_unique<KineticEnergyProbe>(s);
-    if (s.type == "mass_flux") return std::make_unique<MassFluxProbe>(s, c);
-    if (s.type == "body") return std::make_unique<BodyProbe>(s, c);
-    if (s.type == "fem_displacement") return std::make_unique<FemDisplacementProbe>(s, c);
-    if (s.type == "fem_force") return std::make_unique<FemForceProbe>(s, c);
-    if (s.type == "fem_face_load") return std::make_unique<FemFaceLoadProbe>(s, c);
-    if (s.type == "discharge") return std::make_unique<DischargeProbe>(s, c);
-    if (s.type == "trapping") return std::make_unique<TrappingProbe>(s, c);
-    if (s.type == "deposit") return std::make_unique<DepositProbe>(s, c);
-    if (s.type == "flow_section") return std::make_unique<FlowSectionProbe>(s, c);
-    if (s.type == "domain_exit") return std::make_unique<DomainExitProbe>(s, c.dim == 2);
-    if (s.type == "hazard_map") return std::make_unique<HazardMapProbe>(s, c);
-    for (std::size_t w = 0; w < c.walls.size(); ++w) {
-        if (c.walls[w].name != s.wall) continue;
-        if (s.type == "runup") return std::make_unique<RunupProbe>(s, int(w));
-        if (s.type == "fluid_runup") return std::make_unique<FluidRunupProbe>(s, c.walls[w], c);
-        if (s.type == "pressure_map")
-            return std::make_unique<PressureMapProbe>(s, int(w), c.walls[w], c);
-        return std::make_unique<WallForceProbe>(s, int(w), c);
-    }
-    throw InputError("probe '" + s.name + "': unknown wall '" + s.wall + "'");
 }
 
 } // namespace debrisflow::probes

@@ -1,9 +1,11 @@
 #pragma once
 #include "debrisflow/io/case_spec.hpp"
+#include "debrisflow/probes/probe_setup.hpp"
 #include "debrisflow/sph/sph_solver.hpp"
 #include <fstream>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace debrisflow::checkpoint {
@@ -39,7 +41,9 @@ struct ProbeContext {
 Real peak_moving_mean(const std::vector<Real>& t, const std::vector<Real>& v, Real window);
 
 // A measurement taken on a schedule and written to probes/<name>.csv (first column time [s]).
-// Peak (largest value) and final value of every column go to summary.json.
+// Peak (largest value) and final value of every column go to summary.json. A probe type that
+// a [[probe]] block can name has a type_name and reads its own keys in
+// from_config(const ProbeSetup&), and is listed in probe_registry.cpp.
 class Probe {
 public:
     virtual ~Probe() = default;
@@ -79,6 +83,9 @@ public:
     void state(checkpoint::Archive& ar);
     // What a probe keeps between samples (previous values, accumulators, field frames).
     virtual void extra_state(checkpoint::Archive& /*ar*/) {}
+    // The wall (index in the case's walls) whose grain and body contacts this probe reads one by
+    // one, so that the contact loops record them; -1: none.
+    virtual int contact_wall() const { return -1; }
 
 protected:
     Probe(std::string name, Real every) : name_(std::move(name)), every_(every) {}
@@ -92,7 +99,5 @@ private:
     std::vector<std::vector<Real>> history_;
     std::int64_t resume_bytes_ = -1; // CSV length to continue from (a restored probe)
 };
-
-std::unique_ptr<Probe> make_probe(const io::ProbeSpec& spec, const io::CaseSpec& c);
 
 } // namespace debrisflow::probes

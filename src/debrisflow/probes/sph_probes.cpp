@@ -4,6 +4,41 @@
 
 namespace debrisflow::probes {
 
+std::unique_ptr<Probe> PressureProbe::from_config(const ProbeSetup& s) {
+    s.require(!s.c.fluids.empty(), "a fluid");
+    return std::make_unique<PressureProbe>(s.name(), s.every(), s.point_in_domain("position"));
+}
+
+std::unique_ptr<Probe> VelocityProbe::from_config(const ProbeSetup& s) {
+    s.require(!s.c.fluids.empty(), "a fluid");
+    return std::make_unique<VelocityProbe>(s.name(), s.every(), s.point_in_domain("position"));
+}
+
+std::unique_ptr<Probe> GaugeProbe::from_config(const ProbeSetup& s) {
+    s.require(!s.c.fluids.empty(), "a fluid");
+    // A gauge stands at a plan position: (x, y) in 3D, (x) in 2D; a vertical coordinate, if
+    // given, is ignored (the gauge scans the whole height of the domain).
+    const auto& c = s.c;
+    const auto v = s.t.reals("position");
+    const std::size_t plan = c.dim == 3 ? 2 : 1;
+    if (v.size() != plan && v.size() != plan + 1)
+        s.t.fail("position", c.dim == 3 ? "expected [x, y] (or [x, y, z], z ignored)"
+                                        : "expected [x] (or [x, z], z ignored)");
+    const Vec3 x = c.dim == 3 ? Vec3{v[0], v[1], c.domain.lo.z} : Vec3{v[0], 0, c.domain.lo.z};
+    s.require_in_domain("position", x);
+    return std::make_unique<GaugeProbe>(s.name(), s.every(), x, Real(0.25) * c.dp);
+}
+
+std::unique_ptr<Probe> FrontProbe::from_config(const ProbeSetup& s) {
+    s.require(!s.c.fluids.empty(), "a fluid");
+    // "+x" (or "x"): the largest x of the fluid; "-x": the smallest (a surge running towards -x)
+    const std::string a =
+        s.t.choice("axis", {"x", "y", "z", "+x", "+y", "+z", "-x", "-y", "-z"}, "x");
+    const int axis = a.back() == 'x' ? 0 : (a.back() == 'y' ? 1 : 2);
+    if (s.c.dim == 2 && axis == 1) s.t.fail("axis", "2D cases flow in the x-z plane");
+    return std::make_unique<FrontProbe>(s.name(), s.every(), axis, a.front() == '-' ? -1 : 1);
+}
+
 PointSample interpolate(const sph::SphSolver& solver, Vec3 x) {
     const auto& s = solver.particles();
     const auto grid = solver.grid().view();

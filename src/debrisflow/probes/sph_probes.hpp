@@ -30,7 +30,10 @@ protected:
 // Pressure at a point, as a wall-mounted sensor measures it.
 class PressureProbe : public FluidProbe {
 public:
-    explicit PressureProbe(const io::ProbeSpec& s) : FluidProbe(s.name, s.every), x_(s.position) {}
+    static constexpr std::string_view type_name = "pressure";
+    static std::unique_ptr<Probe> from_config(const ProbeSetup& s); // keys: position
+    PressureProbe(std::string name, Real every, Vec3 x)
+        : FluidProbe(std::move(name), every), x_(x) {}
     std::vector<std::string> columns() const override { return {"p [Pa]"}; }
     std::vector<Real> sample_fluid(const sph::SphSolver& solver) const override;
 
@@ -41,7 +44,10 @@ private:
 // Fluid velocity at a point.
 class VelocityProbe : public FluidProbe {
 public:
-    explicit VelocityProbe(const io::ProbeSpec& s) : FluidProbe(s.name, s.every), x_(s.position) {}
+    static constexpr std::string_view type_name = "velocity";
+    static std::unique_ptr<Probe> from_config(const ProbeSetup& s); // keys: position
+    VelocityProbe(std::string name, Real every, Vec3 x)
+        : FluidProbe(std::move(name), every), x_(x) {}
     std::vector<std::string> columns() const override {
         return {"vx [m/s]", "vy [m/s]", "vz [m/s]", "speed [m/s]"};
     }
@@ -57,8 +63,11 @@ private:
 // not seen, a jet overturning above the gauge is.
 class GaugeProbe : public FluidProbe {
 public:
-    GaugeProbe(const io::ProbeSpec& s, const io::CaseSpec& c)
-        : FluidProbe(s.name, s.every), x_(s.position), dz_(Real(0.25) * c.dp) {}
+    static constexpr std::string_view type_name = "gauge";
+    static std::unique_ptr<Probe> from_config(const ProbeSetup& s); // keys: position (plan)
+    // x: the plan position (z unused); dz: the vertical scan step.
+    GaugeProbe(std::string name, Real every, Vec3 x, Real dz)
+        : FluidProbe(std::move(name), every), x_(x), dz_(dz) {}
     std::vector<std::string> columns() const override { return {"elevation [m]"}; }
     std::vector<Real> sample_fluid(const sph::SphSolver& solver) const override;
 
@@ -72,8 +81,11 @@ private:
 // particle centre, without the dp/2 a particle stands for.
 class FrontProbe : public FluidProbe {
 public:
-    explicit FrontProbe(const io::ProbeSpec& s)
-        : FluidProbe(s.name, s.every), axis_(s.axis), sign_(s.normal[s.axis] < 0 ? -1 : 1) {}
+    static constexpr std::string_view type_name = "front";
+    static std::unique_ptr<Probe> from_config(const ProbeSetup& s); // keys: axis ("+x", "-z" ...)
+    // sign: +1 the largest coordinate along axis, -1 the smallest.
+    FrontProbe(std::string name, Real every, int axis, Real sign)
+        : FluidProbe(std::move(name), every), axis_(axis), sign_(sign) {}
     std::vector<std::string> columns() const override {
         return {std::string(1, "xyz"[axis_]) + "_front [m]"};
     }

@@ -5,10 +5,34 @@
 
 namespace debrisflow::probes {
 
-WallForceProbe::WallForceProbe(const io::ProbeSpec& s, int wall, const io::CaseSpec& c)
-    : Probe(s.name, s.every), wall_(wall), normal_(s.normal),
-      unit_(c.dim == 2 && !c.fluids.empty() ? "N/m" : "N"), grains_(c.has_dem),
-      bodies_(c.has_bodies()), fluid_(!c.fluids.empty()) {}
+std::unique_ptr<Probe> WallForceProbe::from_config(const ProbeSetup& s) {
+    const auto& c = s.c;
+    const int wall = s.wall();
+    Vec3 normal = s.t.vec3("normal", c.dim, {});
+    if (norm(normal) > 0) normal = (1 / norm(normal)) * normal;
+    Companions d;
+    d.approach = s.t.string("approach", "");
+    d.boulder = s.t.string("boulder", "");
+    if ((!d.approach.empty() || !d.boulder.empty()) && norm(normal) == 0)
+        s.t.fail("normal", "design companions need the wall's normal (the load direction)");
+    if (!d.approach.empty()) {
+        d.width = c.dim == 2 ? s.t.positive("width", 1) : s.t.positive("width");
+        d.rho = s.t.real("rho", 0);
+        if (d.rho < 0) s.t.fail("rho", "must be >= 0 (0: the approach probe's density)");
+        s.probe_above("approach", {"flow_section", "section"});
+    }
+    if (!d.boulder.empty()) {
+        d.k_c = s.t.positive("k_c", Real(0.1));
+        s.probe_above("boulder", {"body"});
+    }
+    return std::make_unique<WallForceProbe>(s.name(), s.every(), wall, normal, d, c);
+}
+
+WallForceProbe::WallForceProbe(std::string name, Real every, int wall, Vec3 normal,
+                               Companions companions, const io::CaseSpec& c)
+    : Probe(std::move(name), every), wall_(wall), normal_(normal),
+      companions_(std::move(companions)), unit_(c.dim == 2 && !c.fluids.empty() ? "N/m" : "N"),
+      grains_(c.has_dem), bodies_(c.has_bodies()), fluid_(!c.fluids.empty()) {}
 
 std::vector<std::string> WallForceProbe::columns() const {
     std::vector<std::string> c{"Fx [" + unit_ + "]", "Fy [" + unit_ + "]", "Fz [" + unit_ + "]",

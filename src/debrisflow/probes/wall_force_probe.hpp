@@ -14,13 +14,30 @@ namespace debrisflow::probes {
 // part (F*_grains) are also given alone: the split by source.
 class WallForceProbe : public Probe {
 public:
-    WallForceProbe(const io::ProbeSpec& s, int wall, const io::CaseSpec& c);
+    // Design-formula companions (design_formulas.hpp): the approach-flow probe (flow_section or
+    // section), impact width [m] and bulk density [kg/m^3] (0: from the probe) for
+    // F = alpha rho v^2 h w; a body probe for the Hertz boulder load with the load-reduction
+    // factor K_c (Kwan 2012).
+    struct Companions {
+        std::string approach, boulder;
+        Real width = 0, rho = 0, k_c = Real(0.1);
+    };
+    static constexpr std::string_view type_name = "wall_force";
+    // keys: wall, normal; approach, width, rho; boulder, k_c
+    static std::unique_ptr<Probe> from_config(const ProbeSetup& s);
+    // normal: the direction of the normal component (zero: none).
+    WallForceProbe(std::string name, Real every, int wall, Vec3 normal, Companions companions,
+                   const io::CaseSpec& c);
+    int wall() const { return wall_; }
+    Vec3 normal() const { return normal_; }
+    const Companions& companions() const { return companions_; }
     std::vector<std::string> columns() const override;
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
 
 private:
     int wall_;
     Vec3 normal_;
+    Companions companions_;
     std::string unit_;
     bool grains_, bodies_, fluid_;
 };

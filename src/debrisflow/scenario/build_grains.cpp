@@ -275,9 +275,6 @@ void build_dem_walls(const io::CaseSpec& c, dem::WallSet& walls) {
         wall.material = w.material.empty() ? -1 : material_index(c, w.material);
         wall.velocity = w.velocity;
         wall.remove_at = w.remove_at;
-        wall.record_contacts = std::any_of(c.probes.begin(), c.probes.end(), [&](const auto& p) {
-            return p.type == "pressure_map" && p.wall == w.name;
-        });
         std::vector<dem::WallPrimitive> prims;
         Vec3 lo = w.shape.min, hi = w.shape.max;
         if (c.dim == 2) lo.y = -1, hi.y = 1; // a 2D case is the y = 0 slice of these walls

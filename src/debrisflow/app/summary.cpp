@@ -1,10 +1,12 @@
-#include "debrisflow/io/summary.hpp"
+#include "debrisflow/app/summary.hpp"
 #include "debrisflow/io/quoted.hpp"
 #include <cmath>
 #include <fmt/format.h>
 #include <fstream>
 
-namespace debrisflow::io {
+namespace debrisflow::app {
+
+using io::quoted;
 
 namespace {
 std::string num(double v) {
@@ -12,7 +14,7 @@ std::string num(double v) {
 }
 } // namespace
 
-void write_summary(const std::string& path, const CaseSpec& spec, const RunReport& r,
+void write_summary(const std::string& path, const io::CaseSpec& spec, const RunReport& r,
                    const std::vector<std::unique_ptr<probes::Probe>>& probes,
                    const std::vector<probes::DesignCheck>& design) {
     std::ofstream o(path);
@@ -131,4 +133,4 @@ void write_summary(const std::string& path, const CaseSpec& spec, const RunRepor
     o << "}\n";
 }
 
-} // namespace debrisflow::io
+} // namespace debrisflow::app

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace debrisflow::io {
+namespace debrisflow::app {
 
 struct RunReport {
     std::string status = "completed"; // completed | unstable
@@ -33,8 +33,8 @@ struct RunReport {
 
 // summary.json: counts, steps, times, throughput, timing breakdown and probe peaks/finals.
 // `design`: design-formula companions of measured peak wall loads (may be empty).
-void write_summary(const std::string& path, const CaseSpec& spec, const RunReport& report,
+void write_summary(const std::string& path, const io::CaseSpec& spec, const RunReport& report,
                    const std::vector<std::unique_ptr<probes::Probe>>& probes,
                    const std::vector<probes::DesignCheck>& design = {});
 
-} // namespace debrisflow::io
+} // namespace debrisflow::app
