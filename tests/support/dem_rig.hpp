@@ -66,7 +66,7 @@ struct DemRig {
     }
     void start(const dem::DemParams& params, std::vector<dem::Material> mats, Vec3 lo, Vec3 hi,
                const std::vector<dem::PairOverride>& overrides = {}) {
-        sph::Domain d;
+        Domain d;
         d.lo = lo;
         d.hi = hi;
         solver =

@@ -45,7 +45,7 @@ Real departure_angle(Real mu_roll, const std::string& rolling, Real beta0_deg, R
     p.dim = 2;
     p.rolling = rolling;
     p.safety = 0.05;
-    sph::Domain d;
+    Domain d;
     d.lo = {-0.1, 0, -0.1};
     d.hi = {0.1, 0, 0.1};
     rig.solver =

@@ -68,7 +68,7 @@ void SphDemCoupling::compute_forces() {
 void SphDemCoupling::interpolate() {
     const auto& sp = fluid_.params();
     const Real support = fluid_.support();
-    const sph::Domain& dom = fluid_.domain();
+    const Domain& dom = fluid_.domain();
     particles::ParticleSet& set = fluid_.particles();
     const Index np = set.size();
     fluid_grid_.configure(dom.lo, dom.hi, support, 3, dom.periodic);

@@ -10,7 +10,7 @@ namespace debrisflow::dem {
 time::DtLimit critical_dt(const GrainSet& grains, const std::vector<int>& wall_materials,
                           const std::vector<Material>& materials,
                           const std::vector<PairParams>& table, const DemParams& params,
-                          const sph::Domain& domain, Real safety, const ObstacleSet* obstacles) {
+                          const Domain& domain, Real safety, const ObstacleSet* obstacles) {
     const Index n = grains.size();
     const int nm = int(materials.size());
     if (n == 0) return {std::numeric_limits<Real>::max(), "no grains"};

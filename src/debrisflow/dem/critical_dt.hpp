@@ -1,9 +1,9 @@
 #pragma once
+#include "debrisflow/core/domain.hpp"
 #include "debrisflow/dem/dem_params.hpp"
 #include "debrisflow/dem/grain_set.hpp"
 #include "debrisflow/dem/materials.hpp"
 #include "debrisflow/dem/obstacles.hpp"
-#include "debrisflow/sph/sph_solver.hpp"
 #include "debrisflow/time/phase.hpp"
 #include <vector>
 
@@ -22,7 +22,7 @@ namespace debrisflow::dem {
 time::DtLimit critical_dt(const GrainSet& grains, const std::vector<int>& wall_materials,
                           const std::vector<Material>& materials,
                           const std::vector<PairParams>& table, const DemParams& params,
-                          const sph::Domain& domain, Real safety,
+                          const Domain& domain, Real safety,
                           const ObstacleSet* obstacles = nullptr);
 
 } // namespace debrisflow::dem

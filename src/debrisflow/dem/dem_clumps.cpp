@@ -46,7 +46,7 @@ Real DemSolver::clump_kick_drift(Real h) {
     GrainState* hot = hot_.data();
     const Real half = Real(0.5) * h;
     const bool plane = params_.dim == 2;
-    const sph::Domain dom = domain_;
+    const Domain dom = domain_;
     const Index* where = index_of_id_.data();
     Real vmax2 = 0;
     int bad = 0;

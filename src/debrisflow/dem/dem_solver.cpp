@@ -21,7 +21,7 @@ constexpr Real stability_fraction = 0.2;
 
 DemSolver::DemSolver(const DemParams& params, GrainSet& grains, WallSet& walls,
                      std::vector<Material> materials, const std::vector<PairOverride>& overrides,
-                     const sph::Domain& domain)
+                     const Domain& domain)
     : params_(params), grains_(grains), walls_(walls), materials_(std::move(materials)),
       table_(build_pair_table(materials_, overrides, params.rolling)), domain_(domain) {
     map_clumps();
@@ -182,7 +182,7 @@ void DemSolver::kick_drift(Real h) {
     GrainView g = grains_.view();
     const Real half = Real(0.5) * h;
     const bool plane = params_.dim == 2;
-    const sph::Domain dom = domain_;
+    const Domain dom = domain_;
     GrainState* hot = hot_.data();
     Real vmax2 = 0;
     int bad = 0;

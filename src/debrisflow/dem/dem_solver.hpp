@@ -1,4 +1,5 @@
 #pragma once
+#include "debrisflow/core/domain.hpp"
 #include "debrisflow/dem/contact_slots.hpp"
 #include "debrisflow/dem/dem_params.hpp"
 #include "debrisflow/dem/fluid_load.hpp"
@@ -9,7 +10,6 @@
 #include "debrisflow/dem/obstacles.hpp"
 #include "debrisflow/dem/wall_set.hpp"
 #include "debrisflow/neighbors/cell_grid.hpp"
-#include "debrisflow/sph/sph_solver.hpp"
 #include "debrisflow/time/phase.hpp"
 #include <vector>
 
@@ -23,7 +23,7 @@ class DemSolver : public time::Phase {
 public:
     DemSolver(const DemParams& params, GrainSet& grains, WallSet& walls,
               std::vector<Material> materials, const std::vector<PairOverride>& overrides,
-              const sph::Domain& domain);
+              const Domain& domain);
 
     const char* name() const override { return "dem"; }
     void update_neighbors(bool reorder) override;
@@ -112,7 +112,7 @@ public:
     const WallSet& walls() const { return walls_; }
     const std::vector<Material>& materials() const { return materials_; }
     const DemParams& params() const { return params_; }
-    const sph::Domain& domain() const { return domain_; }
+    const Domain& domain() const { return domain_; }
 
 private:
     // Below this many grains the loops run on one thread (OpenMP start-up would dominate).
@@ -151,7 +151,7 @@ private:
     WallSet& walls_;
     std::vector<Material> materials_;
     std::vector<PairParams> table_;
-    sph::Domain domain_;
+    Domain domain_;
     neighbors::CellGrid grid_;
     Vec3 grid_lo_{}, grid_hi_{}; // the grid's box at the last rebuild
     ContactSlots grain_slots_, wall_slots_, obstacle_slots_;

@@ -1,6 +1,7 @@
 #include "debrisflow/flow/domain_exit.hpp"
 #include "debrisflow/dem/dem_solver.hpp"
 #include "debrisflow/exec/parallel.hpp"
+#include "debrisflow/sph/sph_solver.hpp"
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>

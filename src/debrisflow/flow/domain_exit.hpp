@@ -6,6 +6,9 @@
 namespace debrisflow::dem {
 class DemSolver;
 }
+namespace debrisflow::sph {
+class SphSolver;
+}
 
 namespace debrisflow::checkpoint {
 class Archive;
@@ -30,7 +33,7 @@ extern const std::array<const char*, 6> face_names; // "xmin", "xmax", ...
 // checks stop the run.
 class DomainExit {
 public:
-    DomainExit(const io::DomainExitSpec& spec, const sph::Domain& domain, int dim)
+    DomainExit(const io::DomainExitSpec& spec, const Domain& domain, int dim)
         : spec_(spec), domain_(domain), dim_(dim) {}
 
     // Removes what is outside now (either solver may be null). Returns one log line per phase
@@ -50,7 +53,7 @@ private:
     std::string note(const char* phase, const char* unit, ExitTally& tally,
                      const std::array<long, 6>& before, Real held, bool& warned, Real t) const;
     io::DomainExitSpec spec_;
-    sph::Domain domain_;
+    Domain domain_;
     int dim_;
     ExitTally fluid_, grains_;
     bool fluid_warned_ = false, grains_warned_ = false;

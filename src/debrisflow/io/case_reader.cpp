@@ -115,8 +115,8 @@ void read_sph(const ConfigTable& t, CaseSpec& c) {
     t.finish();
 }
 
-sph::Domain read_domain(const ConfigTable& t, int dim, DomainExitSpec& exit) {
-    sph::Domain d;
+Domain read_domain(const ConfigTable& t, int dim, DomainExitSpec& exit) {
+    Domain d;
     d.lo = t.vec3("min", dim);
     d.hi = t.vec3("max", dim);
     if (dim == 2) d.lo.y = d.hi.y = 0;

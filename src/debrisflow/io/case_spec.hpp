@@ -1,4 +1,5 @@
 #pragma once
+#include "debrisflow/core/domain.hpp"
 #include "debrisflow/dem/dem_params.hpp"
 #include "debrisflow/dem/materials.hpp"
 #include "debrisflow/fem/fem_material.hpp"
@@ -6,7 +7,6 @@
 #include "debrisflow/fem/fem_params.hpp"
 #include "debrisflow/io/origin.hpp"
 #include "debrisflow/sph/sph_params.hpp"
-#include "debrisflow/sph/sph_solver.hpp"
 #include <array>
 #include <memory>
 #include <optional>
@@ -260,7 +260,7 @@ struct CaseSpec {
     Real checkpoint_every = 0, checkpoint_wall = 0;
     sph::SphParams sph;
     bool fluid_gravity = true; // [sph] fluid_gravity: false = no hydrostatic field in the fluid
-    sph::Domain domain;
+    Domain domain;
     DomainExitSpec domain_exit;
     Real c0_coefficient = 0, reference_depth = 0; // when c0 = coefficient * sqrt(g H)
     std::vector<FluidSpec> fluids;

@@ -1,9 +1,9 @@
 #pragma once
+#include "debrisflow/core/domain.hpp"
 #include "debrisflow/dem/obstacles.hpp"
 #include "debrisflow/particles/particle_set.hpp"
 #include "debrisflow/rigid/body_contacts.hpp"
 #include "debrisflow/rigid/joints.hpp"
-#include "debrisflow/sph/sph_solver.hpp"
 #include "debrisflow/time/phase.hpp"
 #include <memory>
 #include <unordered_map>
@@ -21,7 +21,7 @@ struct RigidParams {
     int joint_iterations = 30;
     Real joint_stabilization = 0.2;
     int dim = 3;
-    sph::Domain domain;
+    Domain domain;
     // > 0 when the fluid carries no gravity: bodies get the buoyancy -rho V g analytically.
     Real buoyancy_density = 0;
 };

@@ -1,4 +1,5 @@
 #pragma once
+#include "debrisflow/core/domain.hpp"
 #include "debrisflow/exec/pair_scatter.hpp"
 #include "debrisflow/models/eos_tait_k.hpp"
 #include "debrisflow/neighbors/cell_grid.hpp"
@@ -15,11 +16,6 @@ class Archive;
 namespace debrisflow::sph {
 
 // The axis-aligned simulation box; particles leaving a non-periodic side stop the run.
-struct Domain {
-    Vec3 lo, hi;
-    std::array<bool, 3> periodic{false, false, false};
-};
-
 // Weakly-compressible SPH phase: DBC boundaries, Tait EOS, selectable kernel, viscosity and
 // density diffusion. Advanced by the Integrator's symplectic predictor-corrector.
 class SphSolver : public time::Phase {
