@@ -1,5 +1,6 @@
 #pragma once
 #include "debrisflow/core/hd.hpp"
+#include "debrisflow/models/diffusion_context.hpp"
 #include "debrisflow/sph/pair_state_k.hpp"
 #include <cmath>
 
@@ -8,6 +9,8 @@ namespace debrisflow::models {
 using sph::PairState;
 
 // Each model gives both sides of a fluid-fluid pair: drho_i += d.first, drho_j += d.second.
+// Each also says how its parameters follow from the fluid (static configure(context), host
+// only); sph/sph_models.hpp lists the models.
 struct DensityRates {
     Real i, j;
 };
@@ -15,6 +18,7 @@ struct DensityRates {
 // No density diffusion: plain continuity equation.
 struct NoDiffusion {
     static constexpr const char* name = "none";
+    static NoDiffusion configure(const DiffusionContext&) { return {}; }
     DF_HD DensityRates pair(const PairState&) const { return {0, 0}; }
 };
 
@@ -23,6 +27,12 @@ struct NoDiffusion {
 struct MolteniColagrossi {
     static constexpr const char* name = "molteni";
     Real delta = 0.1, h = 0, c0 = 0;
+
+    static MolteniColagrossi configure(const DiffusionContext& c) {
+        MolteniColagrossi d;
+        d.delta = c.delta, d.h = c.h, d.c0 = c.c0;
+        return d;
+    }
 
     DF_HD DensityRates pair(const PairState& s) const {
         // (x_j - x_i).grad_i W = -r^2 f
@@ -38,6 +48,16 @@ struct Fourtakas {
     static constexpr const char* name = "fourtakas";
     Real delta = 0.1, h = 0, c0 = 0;
     Real rho0 = 1000, inv_gamma = 1.0 / 7, g_over_b[3] = {0, 0, 0}; // rho0 g / B
+
+    static Fourtakas configure(const DiffusionContext& c) {
+        Fourtakas d;
+        d.delta = c.delta, d.h = c.h, d.c0 = c.c0;
+        const Real b = c.c0 * c.c0 * c.rho0 / c.gamma;
+        d.rho0 = c.rho0;
+        d.inv_gamma = 1 / c.gamma;
+        for (int k = 0; k < 3; ++k) d.g_over_b[k] = c.rho0 * c.gravity[k] / b;
+        return d;
+    }
 
     DF_HD DensityRates pair(const PairState& s) const {
         // g.(x_j - x_i) = -g.r, scaled by rho0 / B
