@@ -7,14 +7,11 @@
 
 namespace debrisflow::dem {
 
-// Rolling model indices (positions in RollingRegistry).
-enum class RollingId : std::uint8_t { none = 0, constant_torque = 1, epsd = 2 };
-
 // Parameters of one material pair, precomputed at setup. Per-contact quantities (effective
 // radius and mass, overlap) are supplied by the contact loop.
 struct PairParams {
-    std::uint8_t law = 0; // the pair's contact law: its position in ContactLawRegistry
-    RollingId rolling = RollingId::none;
+    std::uint8_t law = 0;        // the pair's contact law: its position in ContactLawRegistry
+    std::uint8_t rolling = 0;    // its rolling-resistance model: position in RollingRegistry
     Real kn = 0, kt = 0;         // linear springs [N/m]
     Real e_star = 0, g_star = 0; // effective Young's and shear moduli [Pa] (elastic laws)
     // linear: damping ratio zeta; Hertz-type laws: Tsuji coefficient alpha(e); dcdem: C_n.

@@ -1,5 +1,6 @@
 #include "debrisflow/dem/critical_dt.hpp"
 #include "debrisflow/dem/contact_time.hpp"
+#include "debrisflow/dem/rolling_models_k.hpp"
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -114,9 +115,8 @@ time::DtLimit critical_dt(const GrainSet& grains, const std::vector<int>& wall_m
             const Real c_r = cr[std::size_t(a)] + (wall      ? 0
                                                    : on_body ? bs.rotational
                                                              : cr[std::size_t(b)]);
-            const bool epsd = p.rolling == RollingId::epsd && p.mu_roll > 0;
-            const Real rolling_ratio =
-                epsd ? std::sqrt(Real(2.25) * p.mu_roll * p.mu_roll * reff * reff * c_r * meff) : 0;
+            const Real rolling_ratio = RollingRegistry::visit_index(
+                p.rolling, [&]<class M>() { return M::mode_ratio(p, reff, c_r, meff); });
             // tc_normal: the undamped normal contact time; the other modes' times are taken
             // undamped too (their damping ratios differ from the normal one, and undamped is the
             // conservative bound).

@@ -3,6 +3,7 @@
 #include "debrisflow/core/stopwatch.hpp"
 #include "debrisflow/dem/critical_dt.hpp"
 #include "debrisflow/dem/grain_contact_k.hpp"
+#include "debrisflow/dem/rolling_models_k.hpp"
 #include "debrisflow/exec/parallel.hpp"
 #include <algorithm>
 #include <cmath>
@@ -26,8 +27,9 @@ DemSolver::DemSolver(const DemParams& params, GrainSet& grains, WallSet& walls,
       table_(build_pair_table(materials_, overrides, params.rolling)), domain_(domain) {
     map_clumps();
     // Contact slots keep a rolling moment only for the elastic-plastic rolling model.
-    const bool epsd = std::any_of(table_.begin(), table_.end(),
-                                  [](const PairParams& p) { return p.rolling == RollingId::epsd; });
+    const bool epsd = std::any_of(table_.begin(), table_.end(), [](const PairParams& p) {
+        return RollingRegistry::visit_index(p.rolling, []<class M>() { return M::keeps_moment; });
+    });
     for (auto* slots : {&grain_slots_, &wall_slots_, &obstacle_slots_}) slots->keep_rolling(epsd);
     for (Real r : grains_.radius) max_radius_ = std::max(max_radius_, r);
     size_search_margin();

@@ -1,6 +1,7 @@
 #include "debrisflow/dem/materials.hpp"
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/dem/contact_laws_k.hpp"
+#include "debrisflow/dem/rolling_models_k.hpp"
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -31,9 +32,8 @@ std::vector<PairParams> build_pair_table(const std::vector<Material>& mats,
                                          const std::string& rolling) {
     const std::size_t n = mats.size();
     std::vector<PairParams> table(n * n);
-    const RollingId roll = rolling == "constant_torque" ? RollingId::constant_torque
-                           : rolling == "epsd"          ? RollingId::epsd
-                                                        : RollingId::none;
+    const auto roll = RollingRegistry::visit_name(
+        rolling, []<class M>() { return std::uint8_t(RollingRegistry::index_of<M>()); });
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t j = 0; j < n; ++j) {
             const Material &a = mats[i], &b = mats[j];

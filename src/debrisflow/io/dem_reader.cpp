@@ -2,6 +2,7 @@
 #include "debrisflow/coupling/drag_laws_k.hpp"
 #include "debrisflow/dem/contact_laws_k.hpp"
 #include "debrisflow/dem/materials.hpp"
+#include "debrisflow/dem/rolling_models_k.hpp"
 #include "debrisflow/io/named.hpp"
 #include <algorithm>
 #include <filesystem>
@@ -337,7 +338,7 @@ void read_dem(const ConfigTable& root, CaseSpec& c) {
     if (p.safety > 0.3) t->fail("safety", "must be <= 0.3 (fraction of the contact time)");
     p.skin = t->positive("skin", 0.1);
     p.reference_velocity = t->real("reference_velocity", 0);
-    p.rolling = t->choice("rolling", {"none", "constant_torque", "epsd"}, "none");
+    p.rolling = t->choice("rolling", dem::RollingRegistry::names(), "none");
     p.subcycle = t->boolean("subcycle", !c.fluids.empty());
     p.reorder = t->boolean("reorder", true);
     c.dem.settle = t->boolean("settle", false);
