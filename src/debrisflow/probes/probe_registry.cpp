@@ -1,5 +1,4 @@
 #include "debrisflow/probes/probe_registry.hpp"
-#include "debrisflow/core/error.hpp"
 #include "debrisflow/probes/body_probe.hpp"
 #include "debrisflow/probes/dem_probes.hpp"
 #include "debrisflow/probes/fem_probes.hpp"
@@ -9,6 +8,7 @@
 #include "debrisflow/probes/pressure_map.hpp"
 #include "debrisflow/probes/sph_probes.hpp"
 #include "debrisflow/probes/wall_force_probe.hpp"
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
@@ -43,14 +43,12 @@ std::unique_ptr<Probe> make_probe(const io::ProbeSpec& spec, const io::CaseSpec&
     const std::string name = t.choice("type", names);
     std::size_t index = 0;
     while (index < c.probes.size() && c.probes[index].name != spec.name) ++index;
-    const ProbeSetup setup{t, c, spec, std::span(c.probes).first(index)};
-    for (const auto& type : types)
-        if (type.name == name) {
-            auto probe = type.from_config(setup);
-            t.finish();
-            return probe;
-        }
-    throw InputError("probe '" + spec.name + "': unknown type '" + name + "'"); // unreachable
+    // choice() has rejected any name not in the list
+    const auto& type = *std::find_if(types.begin(), types.end(),
+                                     [&](const ProbeType& k) { return k.name == name; });
+    auto probe = type.from_config({t, c, spec, std::span(c.probes).first(index)});
+    t.finish();
+    return probe;
 }
 
 } // namespace debrisflow::probes

@@ -38,7 +38,7 @@ Vec3 ProbeSetup::direction(const std::string& key) const {
 }
 
 Vec3 ProbeSetup::direction(const std::string& key, Vec3 fallback) const {
-    return t.has(key) ? direction(key) : (t.vec3(key, c.dim, fallback), fallback);
+    return t.has(key) ? direction(key) : fallback;
 }
 
 int ProbeSetup::wall() const {
@@ -48,12 +48,10 @@ int ProbeSetup::wall() const {
     t.fail("wall", "no wall named \"" + name + "\"");
 }
 
-const io::ProbeSpec* ProbeSetup::probe_above(const std::string& key,
-                                             const std::vector<std::string>& types) const {
-    const std::string name = t.string(key);
+void ProbeSetup::require_probe_above(const std::string& key, const std::string& name,
+                                     const std::vector<std::string>& types) const {
     for (const auto& q : above)
-        if (q.name == name && std::find(types.begin(), types.end(), q.type) != types.end())
-            return &q;
+        if (q.name == name && std::find(types.begin(), types.end(), q.type) != types.end()) return;
     std::string kinds;
     for (std::size_t k = 0; k < types.size(); ++k)
         kinds += (k == 0 ? "" : (k + 1 == types.size() ? " or " : ", ")) + types[k];

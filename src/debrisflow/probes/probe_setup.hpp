@@ -30,10 +30,9 @@ struct ProbeSetup {
     Vec3 direction(const std::string& key, Vec3 fallback) const;
     // The wall named by `wall`: its index in c.walls.
     int wall() const;
-    // The probe above this one named by `key`, of one of `types` ("" when the key is absent
-    // and `optional`).
-    const io::ProbeSpec* probe_above(const std::string& key,
-                                     const std::vector<std::string>& types) const;
+    // Rejects `key` unless a probe above this one is called `name` and is of one of `types`.
+    void require_probe_above(const std::string& key, const std::string& name,
+                             const std::vector<std::string>& types) const;
 };
 
 } // namespace debrisflow::probes

@@ -19,11 +19,11 @@ std::unique_ptr<Probe> WallForceProbe::from_config(const ProbeSetup& s) {
         d.width = c.dim == 2 ? s.t.positive("width", 1) : s.t.positive("width");
         d.rho = s.t.real("rho", 0);
         if (d.rho < 0) s.t.fail("rho", "must be >= 0 (0: the approach probe's density)");
-        s.probe_above("approach", {"flow_section", "section"});
+        s.require_probe_above("approach", d.approach, {"flow_section", "section"});
     }
     if (!d.boulder.empty()) {
         d.k_c = s.t.positive("k_c", Real(0.1));
-        s.probe_above("boulder", {"body"});
+        s.require_probe_above("boulder", d.boulder, {"body"});
     }
     return std::make_unique<WallForceProbe>(s.name(), s.every(), wall, normal, d, c);
 }
