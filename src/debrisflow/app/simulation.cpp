@@ -35,11 +35,7 @@ Simulation::Simulation(io::CaseSpec spec)
                 spec_.fem.layers > 0 ? spec_.fem.layers : sph::kernel_layers(spec_.sph.h, spec_.dp);
             sph_fem_ = std::make_unique<coupling::SphFemCoupling>(*fem_, set_, spec_.dp, layers,
                                                                   spec_.sph.rho0, spec_.dim);
-            fem_->add_load_source([this](std::vector<Vec3>& f) {
-                sph_fem_->collect_forces(f);
-                fem_->report_interface_force("fluid", sph_fem_->last_force());
-            });
-            fem_->add_surface_mover([this](Real ahead) { sph_fem_->move_particles(ahead); });
+            sph_fem_->connect();
         }
         solver_ = std::make_unique<sph::SphSolver>(spec_.sph, set_, spec_.domain);
     }
@@ -53,6 +49,7 @@ Simulation::Simulation(io::CaseSpec spec)
     if (spec_.has_bodies())
         rigid_ = scenario::make_body_solver(spec_, bodies, &dem_walls_, solver_ ? &set_ : nullptr,
                                             first_body_particle);
+    if (dem_fem_) dem_fem_->connect(rigid_.get());
     if (spec_.has_dem) {
         scenario::build_grains(spec_, grains_);
         dem_ = std::make_unique<dem::DemSolver>(spec_.dem.params, grains_, dem_walls_,
@@ -65,8 +62,7 @@ Simulation::Simulation(io::CaseSpec spec)
                         "{}: body '{}' has no contact spheres for the grains; set [rigid] "
                         "contact_spacing (m)",
                         spec_.rigid.bodies[b].origin.block(), rigid_->models()[b].name));
-            rigid_->attach_grains(&obstacles_);
-            dem_->attach_obstacles(&obstacles_);
+            dem_body_ = std::make_unique<coupling::DemBodyCoupling>(*rigid_, *dem_);
         }
         if (solver_ && spec_.dem.fluid_drag != "none")
             sph_dem_ =
@@ -113,20 +109,14 @@ void Simulation::couple_fem_to_contacts() {
         materials.push_back(
             s.dem_material.empty() ? -1 : scenario::material_index(spec_, s.dem_material));
     dem_fem_ = std::make_unique<coupling::DemFemCoupling>(*fem_, dem_walls_, materials);
-    fem_->add_step_source([this](std::vector<Vec3>& f, Real dt) {
-        dem_fem_->collect_grain_forces(f, dt);
-        fem_->report_interface_force("grains", dem_fem_->last_grain_force());
-    });
-    fem_->add_load_source([this](std::vector<Vec3>& f) {
-        if (!rigid_) return;
-        coupling::DemFemCoupling::add_body_forces(rigid_->node_forces(), f);
-        Vec3 total{};
-        for (const Vec3& v : rigid_->node_forces()) total += v;
-        fem_->report_interface_force("bodies", total);
-    });
-    fem_->add_surface_mover([this](Real ahead) {
-        if (ahead == 0) dem_fem_->sync();
-    });
+}
+
+std::vector<const coupling::Coupling*> Simulation::couplings() const {
+    std::vector<const coupling::Coupling*> out;
+    for (const coupling::Coupling* c : std::initializer_list<const coupling::Coupling*>{
+             sph_dem_.get(), dem_body_.get(), sph_fem_.get(), dem_fem_.get()})
+        if (c) out.push_back(c);
+    return out;
 }
 
 probes::Probe& Simulation::probe(const std::string& name) {
@@ -141,36 +131,6 @@ std::size_t Simulation::memory_bytes() const {
     const double particle =
         scenario::sph_bytes_per_particle(spec_.dim, solver_->support() / spec_.dp);
     return std::size_t(grains + double(set_.size()) * particle);
-}
-
-void Simulation::settle_grains() {
-    dem::DemSolver& d = *dem_;
-    const bool measuring = d.measuring_contact_force();
-    d.measure_contact_force(true);
-    d.update_neighbors(true);
-    d.compute_forces();
-    const Real dt = d.dt();
-    const long check_every = 200;
-    long steps = 0;
-    Real ratio = d.unbalanced_ratio();
-    while (ratio >= spec_.dem.settle_ratio) {
-        if (Real(steps) * dt > spec_.dem.settle_max_time)
-            throw InstabilityError(fmt::format(
-                "grains did not settle within dem.settle_max_time = {} s (mean unbalanced / "
-                "mean contact force = {:.3g}, target {})",
-                spec_.dem.settle_max_time, ratio, spec_.dem.settle_ratio));
-        for (long k = 0; k < check_every; ++k) d.step(dt);
-        steps += check_every;
-        d.check_health(Real(steps) * dt);
-        ratio = d.unbalanced_ratio();
-    }
-    d.measure_contact_force(measuring);
-    d.stop_grains();
-    for (auto& w : dem_walls_.walls()) w.impulse = {}, w.impulse_time = 0;
-    log_.line(fmt::format("grains settled: {} steps ({:.4g} s), mean unbalanced / mean contact "
-                          "force = {:.3g} (< {}), {} contacts",
-                          steps, Real(steps) * dt, ratio, spec_.dem.settle_ratio, d.contacts()));
-    settled_ = true;
 }
 
 RunReport Simulation::run(const RunOptions& opt) {
@@ -190,38 +150,11 @@ RunReport Simulation::run(const RunOptions& opt) {
     if (rigid_ && !solver_ && !dem_) report.initial_dt = {spec_.rigid.dt, "rigid dt"};
     const bool files = !opt.out_dir.empty();
     log_.set_quiet(opt.quiet);
+    open_output(opt);
     auto& vtk = vtk_;
     auto& vtk_grains = vtk_grains_;
     auto& vtk_bodies = vtk_bodies_;
     auto& vtk_fem = vtk_fem_;
-    if (files) {
-        std::filesystem::create_directories(opt.out_dir);
-        log_.open(opt.out_dir + "/log.txt", resume_.active);
-        std::ofstream(opt.out_dir + "/case.toml") << spec_.resolved_toml << "\n";
-        for (auto& p : probes_) p->open(opt.out_dir + "/probes");
-        if (spec_.vtk && solver_) vtk = std::make_unique<io::VtkSeries>(opt.out_dir + "/vtk");
-        if (spec_.vtk && dem_)
-            vtk_grains = std::make_unique<io::VtkSeries>(opt.out_dir + "/vtk", "grains");
-        if (spec_.vtk && rigid_)
-            vtk_bodies = std::make_unique<io::VtkSeries>(opt.out_dir + "/vtk", "bodies");
-        if (spec_.vtk && fem_)
-            vtk_fem = std::make_unique<io::VtkSeries>(opt.out_dir + "/vtk", "fem");
-        if (resume_.active) {
-            const std::array<io::VtkSeries*, 4> series{vtk.get(), vtk_grains.get(),
-                                                       vtk_bodies.get(), vtk_fem.get()};
-            for (std::size_t k = 0; k < series.size(); ++k)
-                if (series[k]) series[k]->resume(resume_.frames[k]);
-        }
-    }
-    if (resume_.active) {
-        log_.line(fmt::format("restarted from {} at t = {:.9g} s, step {}", resume_.file, t_,
-                              resume_.step));
-        if (resume_.threads != exec::max_threads())
-            log_.line(fmt::format("note: the checkpoint was written with {} threads, this run "
-                                  "has {}: results match the uninterrupted run only to "
-                                  "round-off (bit for bit at the same thread count)",
-                                  resume_.threads, exec::max_threads()));
-    }
     if (fem_) {
         long elements = 0;
         for (const auto& s : fem_->solids()) elements += long(s.volume.size());
@@ -230,54 +163,8 @@ RunReport Simulation::run(const RunOptions& opt) {
         report.fem_dt = fem_->critical_dt();
         if (!solver_ && !dem_ && !rigid_)
             report.initial_dt = {fem_->critical_dt(), "fem element CFL"};
-        for (const auto& s : fem_->solids())
-            log_.line(fmt::format("solid '{}': {} {} elements, {} nodes", s.name, s.volume.size(),
-                                  fem::name_of(s.type), s.nodes));
-        log_.line(
-            fmt::format("fem: critical step {:.4g} s (element eigenvalue bound, cfl {}){}",
-                        fem_->critical_dt(), spec_.fem.params.cfl,
-                        solver_ || dem_ || rigid_ ? ", sub-cycled inside the global step" : ""));
     }
-    log_.line(fmt::format("debrisflow: case '{}' ({}), {}D, end time {} s", spec_.name, spec_.file,
-                          spec_.dim, spec_.t_end));
-    log_.line(fmt::format("particles: {} fluid, {} boundary, {} grains; threads: {}", report.fluid,
-                          report.boundary, report.grains, report.threads));
-    if (solver_)
-        log_.line(fmt::format("sph: dp = {} m, kernel {}, h = {:.4g} m, c0 = {:.4g} m/s, viscosity "
-                              "{}, diffusion {}, walls {}; initial dt = {:.3g} s (limited by {})",
-                              spec_.dp, spec_.sph.kernel, spec_.sph.h, spec_.sph.c0,
-                              spec_.sph.viscosity, spec_.sph.diffusion, spec_.sph.boundary,
-                              report.initial_dt.dt, report.initial_dt.limiter));
-    if (dem_)
-        log_.line(fmt::format("dem: {} grains{}, {:.4g} kg, {} walls; dt = {:.3g} s ({}; automatic "
-                              "{:.3g} s){}",
-                              grains_.size(),
-                              grains_.clumps.empty() ? ""
-                                                     : fmt::format(" ({} of them in {} clumps)",
-                                                                   grains_.clumps.member_id.size(),
-                                                                   grains_.clumps.size()),
-                              grains_.total_mass(), dem_walls_.walls().size(), dem_->dt(),
-                              report.dem_dt.limiter, dem_->automatic_dt().dt,
-                              spec_.dem.params.subcycle ? ", sub-cycled inside the SPH step" : ""));
-    if (sph_dem_)
-        log_.line(fmt::format("sph-dem: grains feel the fluid's pressure gradient and {} drag "
-                              "(unresolved coupling, kernel support {:.4g} m)",
-                              sph_dem_->drag_law(), solver_->support()));
-    else if (dem_ && solver_)
-        log_.line("sph-dem: grains and fluid do not exchange forces (set [dem] fluid_drag to "
-                  "couple them)");
-    if (rigid_)
-        for (std::size_t b = 0; b < rigid_->bodies().size(); ++b) {
-            const auto& s = rigid_->bodies()[b];
-            log_.line(
-                fmt::format("body '{}': {} motion, mass {:.6g} kg, centre of mass ({:.5g}, "
-                            "{:.5g}, {:.5g}) m, principal moments ({:.5g}, {:.5g}, {:.5g}) "
-                            "kg m^2",
-                            rigid_->models()[b].name,
-                            b < spec_.rigid.bodies.size() ? spec_.rigid.bodies[b].motion : "free",
-                            s.mass, s.pos.x, s.pos.y, s.pos.z, 1 / s.inv_inertia.x,
-                            1 / s.inv_inertia.y, 1 / s.inv_inertia.z));
-        }
+    log_case(report);
     if (dem_ && spec_.dem.settle && !settled_ && t_ == 0 && !resume_.active) {
         try {
             settle_grains();
@@ -297,11 +184,10 @@ RunReport Simulation::run(const RunOptions& opt) {
     }
 
     time::Integrator integ;
-    if (solver_) integ.add_phase(solver_.get());
-    if (dem_) integ.add_phase(dem_.get());
-    if (sph_dem_) integ.add_phase(sph_dem_.get()); // after SPH and DEM: adds to both
-    if (rigid_) integ.add_phase(rigid_.get());     // after SPH: it sums the fluid forces
-    if (fem_) integ.add_phase(fem_.get());
+    // in the order coupling/step_order.cpp states
+    for (time::Phase* p : coupling::force_order(
+             {solver_.get(), dem_.get(), sph_dem_.get(), rigid_.get(), fem_.get()}))
+        integ.add_phase(p);
     integ.set_reorder_every(solver_ ? spec_.sph.reorder_every : 1);
     // Cases without fluid take one force evaluation per step (velocity Verlet in the DEM and
     // the rigid bodies).
@@ -326,15 +212,11 @@ RunReport Simulation::run(const RunOptions& opt) {
     // surfaces they expose get boundary particles of their own.
     if (sph_fem_)
         integ.add_hook(time::Hook::after_integration, [this](const time::StepInfo& s) {
-            const auto keep = sph_fem_->eroded_keep_mask();
-            const Index before = set_.size();
-            if (!keep.empty()) solver_->remove_particles(keep);
-            const Index removed = before - set_.size();
-            const std::size_t added = sph_fem_->expose_new_surface();
-            if (removed == 0 && added == 0) return;
-            log_.line(fmt::format("t = {:.6g} s: {} eroded elements; {} boundary particles "
-                                  "removed, {} added on the exposed surface",
-                                  s.t, fem_->eroded_elements(), removed, added));
+            const std::string note =
+                sph_fem_->erode(s.t, [this](const std::vector<std::uint8_t>& keep) {
+                    solver_->remove_particles(keep);
+                });
+            if (!note.empty()) log_.line(note);
         });
     // Open boundaries act between the integration and the neighbour search of each step.
     if (!inlets_.empty() || !outlets_.empty() || !feeds_.empty() || !rock_feeds_.empty())
@@ -483,20 +365,7 @@ RunReport Simulation::run(const RunOptions& opt) {
             body_info.push_back({rigid_->models()[b].name, rigid_->bodies()[b].mass,
                                  rigid_->models()[b].volume, rigid_->bodies()[b].material});
     const auto design = probes::design_checks(spec_, probes_, body_info);
-    for (const auto& d : design) {
-        if (d.hydro)
-            log_.line(fmt::format("design '{}': peak normal load {:.4g} at t = {:.4g} s; "
-                                  "F = alpha rho v^2 h w with rho {:.4g}, v {:.4g} m/s, h {:.4g} "
-                                  "m, w {:.4g} m gives alpha = {:.3g}",
-                                  d.probe, d.f_peak, d.f_peak_time, d.rho, d.v, d.h, d.w, d.alpha));
-        if (d.hertz)
-            log_.line(fmt::format("design '{}': Hertz boulder load {:.4g} N (m {:.4g} kg, r "
-                                  "{:.4g} m, v {:.4g} m/s, E* {:.4g} Pa), K_c = {} -> {:.4g} N; "
-                                  "measured bodies' peak {:.4g} N",
-                                  d.probe, d.f_hertz, d.mass, d.radius, d.v_impact, d.e_star, d.k_c,
-                                  d.k_c * d.f_hertz, d.f_bodies_peak));
-        if (!d.note.empty()) log_.line("design '" + d.probe + "': " + d.note);
-    }
+    log_design(design);
     if (files) {
         if (dem_ && grains_.clumps.empty())
             scenario::write_grain_state(opt.out_dir + "/grains_final.csv", grains_,
@@ -506,30 +375,6 @@ RunReport Simulation::run(const RunOptions& opt) {
                   " (vtk/*.pvd for ParaView, probes/*.csv, summary.json, log.txt)");
     }
     return report;
-}
-
-void Simulation::write_bodies(io::VtkSeries& vtk, Real t) const {
-    std::vector<Vec3> x, v;
-    std::vector<float> r;
-    std::vector<std::int32_t> body;
-    const auto& states = rigid_->bodies();
-    const auto& models = rigid_->models();
-    for (std::size_t b = 0; b < states.size(); ++b) {
-        const auto& s = states[b];
-        if (s.motion == rigid::Motion::removed) continue; // left through an outlet
-        auto add = [&](Vec3 local, Real radius) {
-            const Vec3 p = s.to_world(local);
-            x.push_back(p);
-            v.push_back(s.point_velocity(p));
-            r.push_back(float(radius));
-            body.push_back(std::int32_t(b));
-        };
-        for (const auto& sp : models[b].samples) add(sp.center, sp.radius);
-        if (models[b].samples.empty())
-            for (const auto& vx : models[b].vertices) add(vx, 0);
-        add({}, 0); // the centre of mass
-    }
-    vtk.write(x, v, r, body, t);
 }
 
 } // namespace debrisflow::app

@@ -1,9 +1,11 @@
 #pragma once
 #include "debrisflow/app/summary.hpp"
 #include "debrisflow/core/log.hpp"
+#include "debrisflow/coupling/dem_body.hpp"
 #include "debrisflow/coupling/dem_fem.hpp"
 #include "debrisflow/coupling/sph_dem.hpp"
 #include "debrisflow/coupling/sph_fem.hpp"
+#include "debrisflow/coupling/step_order.hpp"
 #include "debrisflow/dem/dem_solver.hpp"
 #include "debrisflow/fem/fem_solver.hpp"
 #include "debrisflow/flow/domain_exit.hpp"
@@ -13,6 +15,7 @@
 #include "debrisflow/flow/rock_feed.hpp"
 #include "debrisflow/io/case_spec.hpp"
 #include "debrisflow/io/vtk_writer.hpp"
+#include "debrisflow/probes/design_formulas.hpp"
 #include "debrisflow/probes/probe.hpp"
 #include "debrisflow/rigid/body_solver.hpp"
 #include "debrisflow/sph/sph_solver.hpp"
@@ -54,6 +57,8 @@ public:
     rigid::BodySolver& bodies() { return *rigid_; }
     // The unresolved SPH-DEM coupling ([dem] fluid_drag), or null.
     coupling::SphDemCoupling* fluid_grain_coupling() { return sph_dem_.get(); }
+    // Every coupling of the case (each states its exchanges).
+    std::vector<const coupling::Coupling*> couplings() const;
     bool has_fem() const { return fem_ != nullptr; }
     fem::FemSolver& fem() { return *fem_; }
     const std::vector<std::unique_ptr<probes::Probe>>& probes() const { return probes_; }
@@ -70,6 +75,14 @@ public:
     std::string write_checkpoint(const std::string& out_dir, long step, Real t, Real first_dt);
 
 private:
+    // Opens the output folder (app/simulation_log.cpp): log, case.toml, probe files, VTK
+    // series (continued after a restore); logs a restart.
+    void open_output(const RunOptions& opt);
+    // Writes the case, its models and couplings to the log before the first step
+    // (app/simulation_log.cpp).
+    void log_case(const RunReport& report);
+    // The design-formula companions of the measured peak loads, to the log.
+    void log_design(const std::vector<probes::DesignCheck>& design);
     // Grains and bodies touch the solids' surface triangles (DEM-FEM contact).
     void couple_fem_to_contacts();
     // Runs the DEM alone, gates closed, until PFC's equilibrium ratio (mean unbalanced force /
@@ -92,10 +105,10 @@ private:
     std::unique_ptr<dem::DemSolver> dem_;
     std::unique_ptr<rigid::BodySolver> rigid_;
     std::unique_ptr<fem::FemSolver> fem_;
-    std::unique_ptr<coupling::SphFemCoupling> sph_fem_; // with a fluid
-    std::unique_ptr<coupling::DemFemCoupling> dem_fem_; // with grains or bodies
-    std::unique_ptr<coupling::SphDemCoupling> sph_dem_; // grains in a fluid ([dem] fluid_drag)
-    dem::ObstacleSet obstacles_;                        // grain-body contact link
+    std::unique_ptr<coupling::SphFemCoupling> sph_fem_;   // with a fluid
+    std::unique_ptr<coupling::DemFemCoupling> dem_fem_;   // with grains or bodies
+    std::unique_ptr<coupling::SphDemCoupling> sph_dem_;   // grains in a fluid ([dem] fluid_drag)
+    std::unique_ptr<coupling::DemBodyCoupling> dem_body_; // grains and bodies
     bool settled_ = false;
     std::vector<std::unique_ptr<flow::FluidInlet>> inlets_;
     std::vector<std::unique_ptr<flow::Outlet>> outlets_;

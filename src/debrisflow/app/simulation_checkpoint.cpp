@@ -51,11 +51,7 @@ void Simulation::state(checkpoint::Archive& ar) {
     if (sph_fem_) sph_fem_->state(ar);
     if (sph_dem_) sph_dem_->state(ar);
     if (dem_fem_) dem_fem_->state(ar);
-    if (rigid_ && dem_) {
-        ar.section("obstacles");
-        ar(obstacles_.spheres, obstacles_.body_com, obstacles_.impulse, obstacles_.angular_impulse,
-           obstacles_.time, obstacles_.version);
-    }
+    if (dem_body_) dem_body_->state(ar);
     for (auto& f : feeds_) f->state(ar);
     for (auto& f : rock_feeds_) f->state(ar);
     for (auto& in : inlets_) in->state(ar);

@@ -1,7 +1,8 @@
-// What the SPH-DEM, SPH-FEM and DEM-FEM couplings keep between steps, for checkpoints: the boundary
-// particles' rows in the elements (those exposed by erosion included), the surface facets and
-// how much erosion each coupling has seen.
+// What the SPH-DEM, SPH-FEM, DEM-FEM and DEM-rigid couplings keep between steps, for checkpoints:
+// the boundary particles' rows in the elements (those exposed by erosion included), the surface
+// facets and how much erosion each coupling has seen.
 #include "debrisflow/checkpoint/archive.hpp"
+#include "debrisflow/coupling/dem_body.hpp"
 #include "debrisflow/coupling/dem_fem.hpp"
 #include "debrisflow/coupling/sph_dem.hpp"
 #include "debrisflow/coupling/sph_fem.hpp"
@@ -20,6 +21,12 @@ void SphFemCoupling::state(checkpoint::Archive& ar) {
 void DemFemCoupling::state(checkpoint::Archive& ar) {
     ar.section("dem-fem");
     ar(eroded_seen_, last_grain_force_);
+}
+
+void DemBodyCoupling::state(checkpoint::Archive& ar) {
+    ar.section("obstacles");
+    dem::ObstacleSet& o = obstacles_;
+    ar(o.spheres, o.body_com, o.impulse, o.angular_impulse, o.time, o.version);
 }
 
 void SphDemCoupling::state(checkpoint::Archive& ar) {

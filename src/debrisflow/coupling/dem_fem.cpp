@@ -1,7 +1,40 @@
 #include "debrisflow/coupling/dem_fem.hpp"
 #include "debrisflow/fem/fem_surface.hpp"
+#include "debrisflow/rigid/body_solver.hpp"
 
 namespace debrisflow::coupling {
+
+std::vector<Exchange> DemFemCoupling::exchanges() const {
+    std::vector<Exchange> out{
+        {"dem", "fem",
+         "grains' contact impulse on the surface triangles (WallSet nodes' impulse) / dt, to "
+         "the corners with barycentric weights",
+         When::fem_step_loads},
+        {"fem", "dem", "node positions and velocities, to the surface triangles' corners",
+         When::fem_motion}};
+    if (bodies_)
+        out.push_back(
+            {"rigid", "fem", "bodies' contact forces on the nodes (node_forces)", When::fem_loads});
+    return out;
+}
+
+void DemFemCoupling::connect(const rigid::BodySolver* bodies) {
+    bodies_ = bodies;
+    fem_.add_step_source([this](std::vector<Vec3>& f, Real dt) {
+        collect_grain_forces(f, dt);
+        fem_.report_interface_force("grains", last_grain_force());
+    });
+    if (bodies_)
+        fem_.add_load_source([this](std::vector<Vec3>& f) {
+            add_body_forces(bodies_->node_forces(), f);
+            Vec3 total{};
+            for (const Vec3& v : bodies_->node_forces()) total += v;
+            fem_.report_interface_force("bodies", total);
+        });
+    fem_.add_surface_mover([this](Real ahead) {
+        if (ahead == 0) sync();
+    });
+}
 
 DemFemCoupling::DemFemCoupling(fem::FemSolver& fem, dem::WallSet& walls,
                                const std::vector<int>& dem_material)

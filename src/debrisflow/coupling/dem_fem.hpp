@@ -1,4 +1,5 @@
 #pragma once
+#include "debrisflow/coupling/coupling.hpp"
 #include "debrisflow/dem/wall_set.hpp"
 #include "debrisflow/fem/fem_solver.hpp"
 #include <string>
@@ -6,6 +7,10 @@
 
 namespace debrisflow::checkpoint {
 class Archive;
+}
+
+namespace debrisflow::rigid {
+class BodySolver;
 }
 
 namespace debrisflow::coupling {
@@ -19,11 +24,16 @@ namespace debrisflow::coupling {
 // handed to the FEM as impulse / dt for that step's advance; the bodies' reaction is a force of
 // the body evaluation. Eroded elements leave the surface: the triangles are rebuilt from the
 // remaining facets.
-class DemFemCoupling {
+class DemFemCoupling : public Coupling {
 public:
     // dem_material[s]: DEM material index of solid s (-1: the grain's own material).
     DemFemCoupling(fem::FemSolver& fem, dem::WallSet& walls, const std::vector<int>& dem_material);
 
+    const char* coupling_name() const override { return "dem-fem"; }
+    std::vector<Exchange> exchanges() const override;
+    // Registers the grains' reaction (a step source), the bodies' contact forces when there
+    // are bodies (a load source) and the walls' motion (a surface mover) with the FEM solver.
+    void connect(const rigid::BodySolver* bodies);
     // Copies the node positions and velocities into the walls and replaces the triangles when
     // elements were eroded. Call after every FEM advance.
     void sync();
@@ -42,6 +52,7 @@ public:
 private:
     std::vector<std::vector<dem::NodalCorners>> triangles_per_solid() const;
 
+    const rigid::BodySolver* bodies_ = nullptr;
     fem::FemSolver& fem_;
     dem::WallSet& walls_;
     std::vector<int> walls_of_;

@@ -1,6 +1,7 @@
 #include "debrisflow/coupling/sph_dem.hpp"
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/core/stopwatch.hpp"
+#include "debrisflow/exec/parallel.hpp"
 #include "debrisflow/kernels/kernel.hpp"
 #include <algorithm>
 #include <cmath>
@@ -47,6 +48,17 @@ SphDemCoupling::SphDemCoupling(sph::SphSolver& fluid, dem::DemSolver& dem, std::
 
 time::DtLimit SphDemCoupling::stable_dt() const {
     return {std::numeric_limits<Real>::max(), "none"};
+}
+
+std::vector<Exchange> SphDemCoupling::exchanges() const {
+    return {{"sph", "dem",
+             "fluid pressure gradient, velocity, density and viscosity at the grains, as their "
+             "fluid load (dem::FluidLoad: held force, drag rate beta, fluid velocity)",
+             When::force_evaluation},
+            {"dem", "sph",
+             "the fluid load's impulse over the DEM's last advance / dt, to the fluid particles' "
+             "accelerations with weights V_j W_ij / S_f",
+             When::force_evaluation}};
 }
 
 void SphDemCoupling::compute_forces() {
@@ -97,8 +109,8 @@ void SphDemCoupling::interpolate() {
             // parameter inside the nested lambdas below.
             const auto kernel = kernel_model;
             DragRegistry::visit_name(law, [&, kernel]<class Drag>() {
-#pragma omp parallel for schedule(static) reduction(max : max_rate)
-                for (Index i = 0; i < ng; ++i) {
+                // per grain: its fluid load; the largest drag rate beta / m over the grains
+                max_rate = exec::max_of(ng, [&](Index i) -> Real {
                     const Vec3 xi = g.pos[i];
                     // One pass gathers the kernel sums and, for the renormalised pressure
                     // gradient (Bonet & Lok 1999), A = sum_j V_j p_j grad W_ij,
@@ -133,7 +145,7 @@ void SphDemCoupling::interpolate() {
                                             });
                     if (sf < dry_share) {
                         lf[i] = {}, lu[i] = {}, lb[i] = 0;
-                        continue;
+                        return 0;
                     }
                     share[i] = sf;
                     const Real p_i = sp / (sf + sb);
@@ -159,8 +171,8 @@ void SphDemCoupling::interpolate() {
                     lf[i] = (-phi * vol) * gradp;
                     lu[i] = u;
                     lb[i] = beta;
-                    max_rate = std::max(max_rate, beta * g.inv_mass[i]);
-                }
+                    return beta * g.inv_mass[i];
+                });
             });
         },
         fluid_.models().kernel);
@@ -188,9 +200,8 @@ void SphDemCoupling::apply_reaction() {
     // interpolate()): no write conflicts, and the sums do not depend on the thread count.
     std::visit(
         [&](const auto& kernel) {
-#pragma omp parallel for schedule(static)
-            for (Index j = 0; j < pv.n; ++j) {
-                if (!pv.is_fluid(j)) continue;
+            exec::for_each(pv.n, [&](Index j) {
+                if (!pv.is_fluid(j)) return;
                 Vec3 a{};
                 ggrid.for_each_neighbor(
                     -1, pv.pos(j), gp, gp + 1, gp + 2,
@@ -198,12 +209,12 @@ void SphDemCoupling::apply_reaction() {
                         a += kernel.w(std::sqrt(r2)) * c[i];
                     },
                     3);
-                if (a.x == 0 && a.y == 0 && a.z == 0) continue;
+                if (a.x == 0 && a.y == 0 && a.z == 0) return;
                 const Real inv_rho = 1 / pv.rho[j];
                 pv.ax[j] += inv_rho * a.x;
                 pv.ay[j] += inv_rho * a.y;
                 pv.az[j] += inv_rho * a.z;
-            }
+            });
         },
         fluid_.models().kernel);
 }

@@ -1,4 +1,5 @@
 #pragma once
+#include "debrisflow/coupling/coupling.hpp"
 #include "debrisflow/coupling/drag_laws_k.hpp"
 #include "debrisflow/dem/dem_solver.hpp"
 #include "debrisflow/dem/fluid_load.hpp"
@@ -30,11 +31,13 @@ namespace debrisflow::coupling {
 // symplectic scheme). The fluid equations are not
 // volume-averaged: the fluid does not see the room the grains take, which holds for dilute
 // mixtures. 3D only (sphere drag laws).
-class SphDemCoupling : public time::Phase {
+class SphDemCoupling : public time::Phase, public Coupling {
 public:
     SphDemCoupling(sph::SphSolver& fluid, dem::DemSolver& dem, std::string drag_law);
 
     const char* name() const override { return "sph-dem"; }
+    const char* coupling_name() const override { return "sph-dem"; }
+    std::vector<Exchange> exchanges() const override;
     void update_neighbors(bool) override {}
     // Collects the reaction of the last DEM advance, interpolates the fluid at the grains
     // (their new loads) and adds the reaction to the fluid particles' accelerations. Runs after

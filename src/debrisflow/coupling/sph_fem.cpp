@@ -21,6 +21,33 @@ struct Box {
 
 } // namespace
 
+std::vector<Exchange> SphFemCoupling::exchanges() const {
+    return {{"sph", "fem",
+             "fluid force m_k a_k on the carried boundary particles, to the nodes "
+             "with weights N_a(xi)",
+             When::fem_loads},
+            {"fem", "sph", "node positions and velocities, to the carried boundary particles",
+             When::fem_motion},
+            {"fem", "sph",
+             "eroded elements remove their particles; the exposed surface gains particles",
+             When::between_steps}};
+}
+
+void SphFemCoupling::connect() {
+    fem_.add_load_source([this](std::vector<Vec3>& f) {
+        collect_forces(f);
+        fem_.report_interface_force("fluid", last_force());
+    });
+    fem_.add_surface_mover([this](Real ahead) { move_particles(ahead); });
+}
+
+std::string SphFemCoupling::erosion_note(Real t, std::size_t removed, std::size_t added) const {
+    if (removed == 0 && added == 0) return {};
+    return fmt::format("t = {:.6g} s: {} eroded elements; {} boundary particles removed, {} "
+                       "added on the exposed surface",
+                       t, fem_.eroded_elements(), removed, added);
+}
+
 SphFemCoupling::SphFemCoupling(fem::FemSolver& fem, particles::ParticleSet& set, Real dp,
                                int layers, Real rho, int dim)
     : fem_(fem), set_(set), dim_(dim), thickness_(layers * dp), rho_(rho),

@@ -1,4 +1,5 @@
 #pragma once
+#include "debrisflow/coupling/coupling.hpp"
 #include "debrisflow/fem/fem_solver.hpp"
 #include "debrisflow/fem/fem_surface.hpp"
 #include "debrisflow/particles/particle_set.hpp"
@@ -18,7 +19,7 @@ namespace debrisflow::coupling {
 // so this is exactly the reaction of the fluid), returns to the element's nodes with the same
 // weights, F_a += N_a(xi) m_k a_k: sum_a N_a = 1 conserves momentum across the interface and
 // the virtual work of the load is consistent with the shape functions.
-class SphFemCoupling {
+class SphFemCoupling : public Coupling {
 public:
     // Samples every solid on the fluid's lattice spacing dp: points inside the solid within
     // `layers` x dp of its surface become boundary particles of density rho (mass rho dp^dim);
@@ -26,6 +27,20 @@ public:
     SphFemCoupling(fem::FemSolver& fem, particles::ParticleSet& set, Real dp, int layers, Real rho,
                    int dim);
 
+    const char* coupling_name() const override { return "sph-fem"; }
+    std::vector<Exchange> exchanges() const override;
+    // Registers the fluid load (a load source) and the particles' motion (a surface mover)
+    // with the FEM solver.
+    void connect();
+    // Between steps: eroded elements' particles leave through `remove` (the SPH solver's
+    // keep-mask removal) and the exposed surface gets particles of its own. Returns a log line
+    // when something changed, else empty.
+    template <class Remove> std::string erode(Real t, const Remove& remove) {
+        const auto keep = eroded_keep_mask();
+        const std::size_t before = set_.size();
+        if (!keep.empty()) remove(keep);
+        return erosion_note(t, before - std::size_t(set_.size()), expose_new_surface());
+    }
     // Places the particles from the nodes, `ahead` seconds extrapolated along the node velocity.
     void move_particles(Real ahead);
     // Adds the fluid forces on the particles to the nodes [N].
@@ -46,6 +61,7 @@ public:
     void state(checkpoint::Archive& ar);
 
 private:
+    std::string erosion_note(Real t, std::size_t removed, std::size_t added) const;
     struct Row {
         std::int32_t solid, element;
         std::array<Real, 10> n; // shape-function values at xi

@@ -1,4 +1,5 @@
 #include "debrisflow/dem/contact_slots.hpp"
+#include "debrisflow/exec/parallel.hpp"
 #include <numeric>
 
 namespace debrisflow::dem {
@@ -14,9 +15,9 @@ void ContactSlots::remap(const std::vector<Index>& from) {
     std::vector<Index> count(n, 0), partner(n * cap);
     std::vector<std::uint32_t> key(n * cap);
     std::vector<Vec3> xi(n * cap), mroll(rolling_ ? n * cap : 0);
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) {
-        if (from[i] < 0) continue;
+    exec::for_each(Index(n), [&](Index row) {
+        const std::size_t i = std::size_t(row);
+        if (from[i] < 0) return;
         const std::size_t f = std::size_t(from[i]);
         count[i] = count_[f];
         for (std::size_t k = 0; k < cap; ++k) {
@@ -25,7 +26,7 @@ void ContactSlots::remap(const std::vector<Index>& from) {
             xi[i * cap + k] = xi_[f * cap + k];
             if (rolling_) mroll[i * cap + k] = mroll_[f * cap + k];
         }
-    }
+    });
     count_.swap(count);
     partner_.swap(partner);
     key_.swap(key);

@@ -1,5 +1,6 @@
 #pragma once
 #include "debrisflow/dem/contact_force_k.hpp"
+#include "debrisflow/exec/parallel.hpp"
 #include <algorithm>
 #include <cstdint>
 #include <vector>
@@ -70,31 +71,32 @@ template <class Candidates> void ContactSlots::build(Index n, const Candidates& 
         xi_.assign(partner_.size(), Vec3{});
         mroll_.assign(rolling_ ? partner_.size() : 0, Vec3{});
         const bool had_rolling = old_mroll_.size() == old_xi_.size();
-        Index worst = 0;
-#pragma omp parallel for schedule(dynamic, 256) reduction(max : worst) if (n > 4096)
-        for (Index i = 0; i < n; ++i) {
-            const std::size_t base = std::size_t(i) * std::size_t(cap);
-            const std::size_t old_base = std::size_t(i) * std::size_t(old_cap);
-            const Index old_c = old_count_[std::size_t(i)];
-            Index c = 0;
-            candidates(i, [&](Index partner, std::uint32_t key) {
-                if (c < cap) {
-                    partner_[base + std::size_t(c)] = partner;
-                    key_[base + std::size_t(c)] = key;
-                    for (Index k = 0; k < old_c; ++k)
-                        if (old_key_[old_base + std::size_t(k)] == key) {
-                            const std::size_t to = base + std::size_t(c),
-                                              from = old_base + std::size_t(k);
-                            xi_[to] = old_xi_[from];
-                            if (rolling_ && had_rolling) mroll_[to] = old_mroll_[from];
-                            break;
-                        }
-                }
-                ++c;
-            });
-            count_[std::size_t(i)] = c;
-            worst = std::max(worst, c);
-        }
+        const Index worst = exec::max_of(
+            n, Index(0),
+            [&](Index i) {
+                const std::size_t base = std::size_t(i) * std::size_t(cap);
+                const std::size_t old_base = std::size_t(i) * std::size_t(old_cap);
+                const Index old_c = old_count_[std::size_t(i)];
+                Index c = 0;
+                candidates(i, [&](Index partner, std::uint32_t key) {
+                    if (c < cap) {
+                        partner_[base + std::size_t(c)] = partner;
+                        key_[base + std::size_t(c)] = key;
+                        for (Index k = 0; k < old_c; ++k)
+                            if (old_key_[old_base + std::size_t(k)] == key) {
+                                const std::size_t to = base + std::size_t(c),
+                                                  from = old_base + std::size_t(k);
+                                xi_[to] = old_xi_[from];
+                                if (rolling_ && had_rolling) mroll_[to] = old_mroll_[from];
+                                break;
+                            }
+                    }
+                    ++c;
+                });
+                count_[std::size_t(i)] = c;
+                return c;
+            },
+            exec::dynamic(256, 4097));
         if (worst <= cap) return;
         cap_ = worst + worst / 4 + 2; // history still in old_*: retry with room
     }

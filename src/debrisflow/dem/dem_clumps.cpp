@@ -1,4 +1,5 @@
 #include "debrisflow/dem/dem_solver.hpp"
+#include "debrisflow/exec/parallel.hpp"
 #include "debrisflow/rigid/free_rotation_k.hpp"
 #include <algorithm>
 
@@ -48,10 +49,7 @@ Real DemSolver::clump_kick_drift(Real h) {
     const bool plane = params_.dim == 2;
     const Domain dom = domain_;
     const Index* where = index_of_id_.data();
-    Real vmax2 = 0;
-    int bad = 0;
-#pragma omp parallel for schedule(static) reduction(max : vmax2) reduction(+ : bad) if (cl.size() > clump_parallel_min)
-    for (Index c = 0; c < cl.size(); ++c) {
+    const auto move_clump = [&](Index c, DriftReport& out) {
         const std::size_t k = std::size_t(c);
         // as the grains: v_n+1/2 = v_n + (h/2) F/M drives the drift, the stored velocity is the
         // prediction v_n+1/2 + (h/2) F/M; likewise the angular momentum, whose half-step value
@@ -82,16 +80,18 @@ Real DemSolver::clump_kick_drift(Real h) {
                     if (p[d] >= dom.hi[d]) p[d] -= len;
                     if (p[d] < dom.lo[d]) p[d] += len;
                 } else if (!(plane && d == 1) && !(p[d] >= dom.lo[d] && p[d] <= dom.hi[d])) {
-                    ++bad;
+                    ++out.outside;
                 }
             }
             g.pos[i] = p, g.vel[i] = vi, g.spin[i] = w;
             hot[i].x = p, hot[i].v = vi, hot[i].w = w;
-            vmax2 = std::max(vmax2, dot(vi, vi));
+            out.vmax2 = std::max(out.vmax2, dot(vi, vi));
         }
-    }
-    if (bad > 0) bad_ = true;
-    return vmax2;
+    };
+    const DriftReport m = exec::reduce(cl.size(), DriftReport{}, move_clump, DriftReport::combine,
+                                       exec::serial_below(clump_parallel_min + 1));
+    if (m.outside > 0) bad_ = true;
+    return m.vmax2;
 }
 
 void DemSolver::clump_forces(Real half) {
@@ -100,8 +100,7 @@ void DemSolver::clump_forces(Real half) {
     const Vec3 grav = params_.gravity;
     const bool plane = params_.dim == 2;
     const Index* where = index_of_id_.data();
-#pragma omp parallel for schedule(static) if (cl.size() > clump_parallel_min)
-    for (Index c = 0; c < cl.size(); ++c) {
+    const auto sum_clump = [&](Index c) {
         const std::size_t k = std::size_t(c);
         Vec3 f = cl.mass[k] * grav, t{};
         for (std::size_t m = cl.first[k]; m < cl.first[k + 1]; ++m) {
@@ -123,7 +122,8 @@ void DemSolver::clump_forces(Real half) {
             g.vel[i] = cl.vel[k] + cross(w, lever);
             g.spin[i] = w;
         }
-    }
+    };
+    exec::for_each(cl.size(), sum_clump, exec::serial_below(clump_parallel_min + 1));
 }
 
 } // namespace debrisflow::dem

@@ -1,6 +1,6 @@
 #include "debrisflow/dem/dem_solver.hpp"
 #include "debrisflow/dem/grain_contact_k.hpp"
-#include <omp.h>
+#include "debrisflow/exec/parallel.hpp"
 
 // The DemSolver's force evaluation: grain-grain contacts over the half list on contiguous
 // thread ranges, then per grain gravity, walls, bodies and fluid loads and the closing kick.
@@ -11,7 +11,7 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
     GrainView g = grains_.view();
     const PairTable table = pair_table();
     const neighbors::GridView grid = grid_.view();
-    const int nt = n > parallel_min ? omp_get_max_threads() : 1;
+    const int nt = n > parallel_min ? exec::max_threads() : 1;
     balance_threads(nt);
     acc_.resize(6 * std::size_t(n));
     spills_.resize(std::size_t(nt));
@@ -22,8 +22,6 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
     const Index* gcount = grain_slots_.counts();
     Vec3* gxi = grain_slots_.tangential();
     Vec3* groll = grain_slots_.rolling();
-    long touching = 0;
-    Real fsum = 0;
     const bool measure = measure_contact_force_; // |F| summed only for the settling ratio
     // Only the evaluation that ends a step advances the tangential springs and hands impulses
     // to bodies and FEM nodes; a re-evaluation of the same state (compute_forces) must not.
@@ -39,22 +37,13 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
         return table(mi, mw < 0 ? mi : mw);
     };
     const std::size_t nw = wl.size();
-    std::vector<Real> wall_sum(6 * nw, 0);
+    wall_sum_.assign(6 * nw, 0);
     bool record = false; // some wall keeps its contacts' loads (a pressure map reads them)
     for (auto& w : wl) {
         w.contacts.clear();
         record = record || w.record_contacts;
     }
-    struct RecordedLoad {
-        Index grain;
-        std::size_t wall;
-        ContactLoad load;
-    };
-    struct ThreadSums {
-        std::vector<Real> wall, body;
-        std::vector<RecordedLoad> loads;
-    };
-    std::vector<ThreadSums> partial(static_cast<std::size_t>(nt));
+    thread_sums_.resize(std::size_t(nt));
     const Index wcap = wall_slots_.capacity();
     const Index* wp = wall_slots_.partners();
     const Index* wcount = wall_slots_.counts();
@@ -75,7 +64,7 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
     const Real half = half_kick;
     // grain-obstacle (rigid body) contacts
     const std::size_t nb = obstacles_ ? obstacles_->body_com.size() : 0;
-    std::vector<Real> body_sum(6 * nb, 0);
+    body_sum_.assign(6 * nb, 0);
     const Index ocap = obstacle_slots_.capacity();
     const Index* op = obstacles_ ? obstacle_slots_.partners() : nullptr;
     const Index* ocount =
@@ -97,9 +86,11 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
     // third law), the reaction on partners in its range added at once, on others set aside;
     // (2) after all rows, the reactions set aside for its range by the other threads, in
     // thread order; (3) per grain: gravity, walls, bodies, fluid, the closing half kick.
-#pragma omp parallel num_threads(nt) reduction(+ : touching, fsum) if (nt > 1)
-    {
-        const int th = omp_get_thread_num();
+    exec::team(nt, [&](const exec::Team& team) {
+        const int th = team.thread;
+        ThreadSums& mine = thread_sums_[std::size_t(th)];
+        long touching = 0;
+        Real fsum = 0;
         const Index lo = range[th], hi = range[th + 1];
         std::fill(acc + 6 * std::size_t(lo), acc + 6 * std::size_t(hi), Real(0));
         std::vector<Spill>& spill = spills_[std::size_t(th)];
@@ -132,7 +123,7 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
             ai[3] += ti.x, ai[4] += ti.y, ai[5] += ti.z;
         }
         if (nt > 1) {
-#pragma omp barrier
+            team.barrier();
             for (int u = 0; u < nt; ++u) {
                 if (u == th) continue;
                 for (const Spill& sp : spills_[std::size_t(u)]) {
@@ -143,8 +134,9 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
                 }
             }
         }
-        std::vector<Real> local(6 * nw, 0), obody(6 * nb, 0);
-        std::vector<RecordedLoad> local_loads;
+        mine.wall.assign(6 * nw, 0);
+        mine.body.assign(6 * nb, 0);
+        mine.loads.clear();
         WallCandidates cand; // one per thread: its arrays are not cleared for every grain
         for (Index i = lo; i < hi; ++i) {
             // a clump member's force is its contacts'; gravity acts on the clump
@@ -198,22 +190,19 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
                         for (int a = 0; a < 3; ++a) {
                             Vec3& J = node_j[nc->node[std::size_t(a)]];
                             const Vec3 dj = (-current_h * bw[a]) * c2.force;
-#pragma omp atomic
-                            J.x += dj.x;
-#pragma omp atomic
-                            J.y += dj.y;
-#pragma omp atomic
-                            J.z += dj.z;
+                            exec::atomic_add(J.x, dj.x);
+                            exec::atomic_add(J.y, dj.y);
+                            exec::atomic_add(J.z, dj.z);
                         }
                     }
                     f += c2.force;
                     t += c2.torque;
                     const Vec3 m = cross(cand.q[c] - wl[w].origin, -c2.force) - c2.mroll;
-                    Real* ws = local.data() + 6 * w;
+                    Real* ws = mine.wall.data() + 6 * w;
                     ws[0] -= c2.force.x, ws[1] -= c2.force.y, ws[2] -= c2.force.z;
                     ws[3] += m.x, ws[4] += m.y, ws[5] += m.z;
                     if (record && wl[w].record_contacts)
-                        local_loads.push_back({i, w, {cand.q[c], -1 * c2.force}});
+                        mine.loads.push_back({i, w, {cand.q[c], -1 * c2.force}});
                     if (measure) fsum += norm(c2.force);
                     ++touching;
                 }
@@ -241,7 +230,7 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
                     f += c.force_i;
                     t += c.torque_i;
                     const Vec3 tb = c.torque_j + cross(o.x - ocom[o.body], -c.force_i);
-                    Real* bs = obody.data() + 6 * std::size_t(o.body);
+                    Real* bs = mine.body.data() + 6 * std::size_t(o.body);
                     bs[0] -= c.force_i.x, bs[1] -= c.force_i.y, bs[2] -= c.force_i.z;
                     bs[3] += tb.x, bs[4] += tb.y, bs[5] += tb.z;
                     if (measure) fsum += norm(c.force_i);
@@ -264,13 +253,19 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
             g.force[i] = f;
             g.torque[i] = t;
         }
-        partial[std::size_t(th)] = {std::move(local), std::move(obody), std::move(local_loads)};
-    }
+        mine.touching = touching;
+        mine.force_sum = fsum;
+    });
     // Walls' and bodies' sums in thread order (ranges ascend), so that a run repeats bitwise.
-    for (const ThreadSums& ps : partial) {
-        for (std::size_t k = 0; k < ps.wall.size(); ++k) wall_sum[k] += ps.wall[k];
-        for (std::size_t k = 0; k < ps.body.size(); ++k) body_sum[k] += ps.body[k];
+    long touching = 0;
+    Real fsum = 0;
+    for (std::size_t th = 0; th < std::size_t(nt); ++th) {
+        const ThreadSums& ps = thread_sums_[th];
+        for (std::size_t k = 0; k < ps.wall.size(); ++k) wall_sum_[k] += ps.wall[k];
+        for (std::size_t k = 0; k < ps.body.size(); ++k) body_sum_[k] += ps.body[k];
         for (const auto& r : ps.loads) wl[r.wall].contacts.push_back(r.load); // in grain order
+        touching += ps.touching;
+        fsum += ps.force_sum;
     }
     if (clump_of) clump_forces(half_kick);
     if (obstacles_ && (ends_step || collect_obstacles) && current_h_ > 0) {
@@ -279,9 +274,9 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
         o.angular_impulse.resize(nb);
         for (std::size_t b = 0; b < nb; ++b) {
             o.impulse[b] +=
-                current_h_ * Vec3{body_sum[6 * b], body_sum[6 * b + 1], body_sum[6 * b + 2]};
+                current_h_ * Vec3{body_sum_[6 * b], body_sum_[6 * b + 1], body_sum_[6 * b + 2]};
             o.angular_impulse[b] +=
-                current_h_ * Vec3{body_sum[6 * b + 3], body_sum[6 * b + 4], body_sum[6 * b + 5]};
+                current_h_ * Vec3{body_sum_[6 * b + 3], body_sum_[6 * b + 4], body_sum_[6 * b + 5]};
         }
         o.time += current_h_;
     }
@@ -289,8 +284,8 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
     contacts_ = touching;
     sum_contact_force_ = measure ? fsum : 0;
     for (std::size_t w = 0; w < nw; ++w) {
-        wl[w].force = {wall_sum[6 * w], wall_sum[6 * w + 1], wall_sum[6 * w + 2]};
-        wl[w].moment = {wall_sum[6 * w + 3], wall_sum[6 * w + 4], wall_sum[6 * w + 5]};
+        wl[w].force = {wall_sum_[6 * w], wall_sum_[6 * w + 1], wall_sum_[6 * w + 2]};
+        wl[w].moment = {wall_sum_[6 * w + 3], wall_sum_[6 * w + 4], wall_sum_[6 * w + 5]};
     }
 }
 

@@ -9,7 +9,6 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
-#include <omp.h>
 #include <unordered_map>
 
 namespace debrisflow::dem {
@@ -157,16 +156,21 @@ void DemSolver::configure_grid() {
     const Index n = grains_.size();
     Vec3 lo = domain_.hi, hi = domain_.lo;
     const Vec3* x = grains_.pos.data();
-    Real lx = lo.x, ly = lo.y, lz = lo.z, hx = hi.x, hy = hi.y, hz = hi.z;
-#pragma omp parallel for schedule(static) reduction(min                                            \
-                                                    : lx, ly, lz)                                  \
-    reduction(max                                                                                  \
-              : hx, hy, hz) if (n > parallel_min)
-    for (Index i = 0; i < n; ++i) {
-        lx = std::min(lx, x[i].x), ly = std::min(ly, x[i].y), lz = std::min(lz, x[i].z);
-        hx = std::max(hx, x[i].x), hy = std::max(hy, x[i].y), hz = std::max(hz, x[i].z);
-    }
-    lo = {lx, ly, lz}, hi = {hx, hy, hz};
+    struct Box {
+        Vec3 lo, hi;
+        void add(const Vec3& p) {
+            lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+            hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+        }
+    };
+    const Box box = exec::reduce(
+        n, Box{lo, hi}, [&](Index i, Box& b) { b.add(x[i]); },
+        [](Box& a, const Box& b) {
+            a.lo = {std::min(a.lo.x, b.lo.x), std::min(a.lo.y, b.lo.y), std::min(a.lo.z, b.lo.z)};
+            a.hi = {std::max(a.hi.x, b.hi.x), std::max(a.hi.y, b.hi.y), std::max(a.hi.z, b.hi.z)};
+        },
+        exec::serial_below(parallel_min + 1));
+    lo = box.lo, hi = box.hi;
     const Real radius = 2 * max_radius_ + search_margin();
     for (int d = 0; d < 3; ++d) {
         if (domain_.periodic[d] || !(hi[d] >= lo[d])) {
@@ -186,12 +190,9 @@ void DemSolver::kick_drift(Real h) {
     const bool plane = params_.dim == 2;
     const Domain dom = domain_;
     GrainState* hot = hot_.data();
-    Real vmax2 = 0;
-    int bad = 0;
     const std::int32_t* clump_of = clump_of_id_.empty() ? nullptr : clump_of_id_.data();
-#pragma omp parallel for schedule(static) reduction(max : vmax2) reduction(+ : bad) if (g.n > parallel_min)
-    for (Index i = 0; i < g.n; ++i) {
-        if (clump_of && clump_of[g.id[i]] >= 0) continue; // moved with its clump below
+    const auto move_grain = [&](Index i, DriftReport& out) {
+        if (clump_of && clump_of[g.id[i]] >= 0) return; // moved with its clump below
         // v_n+1/2 = v_n + (h/2) a_n drives the drift; the stored velocity is then the
         // prediction v* = v_n+1/2 + (h/2) a_n, so that the dashpots see the velocity at the time
         // of the positions (second-order damping); the final kick adds (h/2)(a_n+1 - a_n).
@@ -210,7 +211,7 @@ void DemSolver::kick_drift(Real h) {
                 if (x >= dom.hi[d]) x -= len;
                 if (x < dom.lo[d]) x += len;
             } else if (!(plane && d == 1) && !(x >= dom.lo[d] && x <= dom.hi[d])) {
-                ++bad; // outside the domain, or NaN
+                ++out.outside; // outside the domain, or NaN
             }
             p[d] = x;
         }
@@ -220,10 +221,13 @@ void DemSolver::kick_drift(Real h) {
         hs.v = g.vel[i];
         hs.w = w;
         const Real v2 = vel[0] * vel[0] + vel[1] * vel[1] + vel[2] * vel[2];
-        vmax2 = std::max(vmax2, v2);
-    }
+        out.vmax2 = std::max(out.vmax2, v2);
+    };
+    const DriftReport moved = exec::reduce(g.n, DriftReport{}, move_grain, DriftReport::combine,
+                                           exec::serial_below(parallel_min + 1));
+    Real vmax2 = moved.vmax2;
     if (clump_of) vmax2 = std::max(vmax2, clump_kick_drift(h));
-    if (bad > 0 || !std::isfinite(vmax2)) bad_ = true;
+    if (moved.outside > 0 || !std::isfinite(vmax2)) bad_ = true;
     drift_ += h * (std::sqrt(vmax2) + walls_.max_speed());
 }
 

@@ -11,6 +11,7 @@
 #include "debrisflow/dem/wall_set.hpp"
 #include "debrisflow/neighbors/cell_grid.hpp"
 #include "debrisflow/time/phase.hpp"
+#include <algorithm>
 #include <vector>
 
 namespace debrisflow::dem {
@@ -117,6 +118,15 @@ public:
 private:
     // Below this many grains the loops run on one thread (OpenMP start-up would dominate).
     static constexpr Index parallel_min = 4096;
+    // What a drift reports: the largest speed squared, and how many grains left the domain.
+    struct DriftReport {
+        Real vmax2 = 0;
+        int outside = 0;
+        static void combine(DriftReport& a, const DriftReport& b) {
+            a.vmax2 = std::max(a.vmax2, b.vmax2);
+            a.outside += b.outside;
+        }
+    };
     void rebuild();
     void configure_grid();
     // Copies positions, velocities, spins, radii, masses and materials into hot_.
@@ -175,6 +185,22 @@ private:
     long ranges_balanced_ = -1;
     std::vector<Real> acc_;
     std::vector<std::vector<Spill>> spills_;
+    // What each thread of the per-grain pass sums, kept between steps (no allocation in a
+    // step once the sizes are reached): wall and body loads (6 reals each), the contact loads
+    // a pressure map reads, touching contacts and the summed |F| for the settling ratio.
+    struct RecordedLoad {
+        Index grain;
+        std::size_t wall;
+        ContactLoad load;
+    };
+    struct ThreadSums {
+        std::vector<Real> wall, body;
+        std::vector<RecordedLoad> loads;
+        long touching = 0;
+        Real force_sum = 0;
+    };
+    std::vector<ThreadSums> thread_sums_;
+    std::vector<Real> wall_sum_, body_sum_;
     // Interleaved copy of the state the contact loop reads (one 96-byte record per grain
     // instead of twelve arrays), written by the drift; the GrainSet stays the master copy.
     std::vector<GrainState> hot_;

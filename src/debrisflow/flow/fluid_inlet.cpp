@@ -1,4 +1,5 @@
 #include "debrisflow/flow/fluid_inlet.hpp"
+#include "debrisflow/exec/parallel.hpp"
 #include "debrisflow/io/flow_reader.hpp"
 #include "debrisflow/sph/sph_params.hpp"
 #include <cmath>
@@ -51,17 +52,16 @@ void FluidInlet::apply(particles::ParticleSet& set, Real t, Real dt) {
     const Real sign = Real(spec_.sign);
     Real* vs[3] = {set.vx.data(), set.vy.data(), set.vz.data()};
     Real* vo[3] = {set.vx_old.data(), set.vy_old.data(), set.vz_old.data()};
-#pragma omp parallel for schedule(static)
-    for (Index i = 0; i < n; ++i) {
-        if (set.kind[i] != std::uint8_t(particles::Kind::fluid)) continue;
+    exec::for_each(n, [&](Index i) {
+        if (set.kind[i] != std::uint8_t(particles::Kind::fluid)) return;
         const Real x[3] = {set.x[i], set.y[i], set.z[i]};
         bool inside = true;
         for (int k = 0; k < 3; ++k)
             if (!(flat && k == 1)) inside = inside && x[k] >= lo[k] && x[k] <= hi[k];
-        if (!inside) continue;
+        if (!inside) return;
         for (int k = 0; k < 3; ++k) vs[k][i] = vo[k][i] = k == a ? sign * u : 0;
         set.rho[i] = set.rho_old[i] = density_at(x[2]);
-    }
+    });
     // New layers behind the upstream one: it started at dp/2 inside the upstream face.
     advance_ += u * dt;
     const Real upstream = spec_.sign > 0 ? spec_.min[a] : spec_.max[a];

@@ -1,5 +1,6 @@
 #include "debrisflow/neighbors/cell_grid.hpp"
 #include "debrisflow/core/error.hpp"
+#include "debrisflow/exec/parallel.hpp"
 #include <cmath>
 #include <string>
 
@@ -52,12 +53,12 @@ void CellGrid::build(const Real* x, const Real* y, const Real* z, Index n, int s
     order_.resize(n);
     const GridView g = view_;
     const int n0 = nc_[0], n1 = nc_[1];
-#pragma omp parallel for schedule(static)
-    for (Index i = 0; i < n; ++i) {
+    Index* cell_of = cell_of_.data();
+    exec::for_each(n, [=](Index i) {
         const std::size_t k = std::size_t(i) * std::size_t(stride);
-        cell_of_[i] =
+        cell_of[i] =
             g.cell_coord(x[k], 0) + n0 * (g.cell_coord(y[k], 1) + n1 * g.cell_coord(z[k], 2));
-    }
+    });
     const int nc = cell_count();
     count_.assign(std::size_t(nc) + 1, 0);
     for (Index i = 0; i < n; ++i) ++count_[cell_of_[i] + 1];

@@ -1,4 +1,5 @@
 #include "debrisflow/neighbors/pair_list.hpp"
+#include "debrisflow/exec/parallel.hpp"
 #include <algorithm>
 #include <atomic>
 #include <numeric>
@@ -10,12 +11,10 @@ void PairList::build(const GridView& grid, const particles::ParticleView& pv) {
     count_.assign(std::size_t(n), 0);
     for (;;) {
         j_.resize(std::size_t(n) * capacity_);
-        Index worst = 0;
         const Index cap = Index(capacity_);
         Index* jj = j_.data();
         Index* cnt = count_.data();
-#pragma omp parallel for schedule(dynamic, 512) reduction(max : worst)
-        for (Index i = 0; i < n; ++i) {
+        const auto row = [&](Index i) {
             Index c = 0;
             Index* out = jj + std::size_t(i) * cap;
             if (pv.is_fluid(i))
@@ -25,8 +24,9 @@ void PairList::build(const GridView& grid, const particles::ParticleView& pv) {
                     ++c;
                 });
             cnt[i] = c;
-            worst = std::max(worst, c);
-        }
+            return c;
+        };
+        const Index worst = exec::max_of(n, Index(0), row, exec::dynamic(512));
         if (worst <= cap) break;
         capacity_ = std::size_t(worst) + std::size_t(worst) / 4 + 8;
     }
@@ -69,14 +69,16 @@ void PairList::index_touched(Index n) {
     const Index* cnt = count_.data();
     const std::size_t cap = capacity_;
     // Several rows can mark the same j: relaxed atomic stores of the same value.
-#pragma omp parallel for schedule(dynamic, 512)
-    for (Index i = 0; i < n; ++i) {
-        if (cnt[i] == 0) continue;
-        std::atomic_ref<std::uint8_t>(mask[i]).store(1, std::memory_order_relaxed);
-        const Index* row = jj + std::size_t(i) * cap;
-        for (Index k = 0; k < cnt[i]; ++k)
-            std::atomic_ref<std::uint8_t>(mask[row[k]]).store(1, std::memory_order_relaxed);
-    }
+    exec::for_each(
+        n,
+        [=](Index i) {
+            if (cnt[i] == 0) return;
+            std::atomic_ref<std::uint8_t>(mask[i]).store(1, std::memory_order_relaxed);
+            const Index* row = jj + std::size_t(i) * cap;
+            for (Index k = 0; k < cnt[i]; ++k)
+                std::atomic_ref<std::uint8_t>(mask[row[k]]).store(1, std::memory_order_relaxed);
+        },
+        exec::dynamic(512));
     rows_.clear();
     touched_.clear();
     for (Index i = 0; i < n; ++i) {

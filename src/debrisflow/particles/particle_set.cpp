@@ -1,5 +1,6 @@
 #include "debrisflow/particles/particle_set.hpp"
 #include "debrisflow/checkpoint/archive.hpp"
+#include "debrisflow/exec/parallel.hpp"
 
 namespace debrisflow::particles {
 
@@ -59,8 +60,7 @@ void ParticleSet::permute(const std::vector<Index>& perm) {
         using V = std::decay_t<decltype(field)>;
         V out(field.size());
         const Index n = Index(perm.size());
-#pragma omp parallel for schedule(static)
-        for (Index i = 0; i < n; ++i) out[i] = field[perm[i]];
+        exec::for_each(n, [&](Index i) { out[i] = field[perm[i]]; });
         field.swap(out);
     });
     if (sps_tau.empty()) return;

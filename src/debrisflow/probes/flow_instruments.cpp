@@ -1,5 +1,6 @@
 #include "debrisflow/probes/flow_instruments.hpp"
 #include "debrisflow/dem/dem_solver.hpp"
+#include "debrisflow/exec/parallel.hpp"
 #include "debrisflow/rigid/body_solver.hpp"
 #include <algorithm>
 #include <cmath>
@@ -82,18 +83,15 @@ std::vector<Real> DischargeProbe::sample(Real t, const ProbeContext& ctx) {
     const Real dt = started_ ? t - t_last_ : 0;
     if (fluid_) {
         const auto& s = ctx.sph->particles();
-        Real rate = 0;
-        const Index n = s.size();
         const Vec3 p0 = point_, nn = n_;
         const Real inv_dp = 1 / dp_;
-#pragma omp parallel for reduction(+ : rate)
-        for (Index i = 0; i < n; ++i) {
-            if (s.kind[i] != 0) continue;
+        Real rate = exec::sum_of<Real>(s.size(), [&](Index i) -> Real {
+            if (s.kind[i] != 0) return 0;
             const Real d = (s.x[i] - p0.x) * nn.x + (s.y[i] - p0.y) * nn.y + (s.z[i] - p0.z) * nn.z;
             const Real w = 1 - std::abs(d) * inv_dp; // hat of width 2 dp: sums to 1 on a lattice
-            if (w <= 0) continue;
-            rate += w * s.mass[i] * (s.vx[i] * nn.x + s.vy[i] * nn.y + s.vz[i] * nn.z);
-        }
+            if (w <= 0) return 0;
+            return w * s.mass[i] * (s.vx[i] * nn.x + s.vy[i] * nn.y + s.vz[i] * nn.z);
+        });
         rate *= inv_dp;
         if (!started_) fluid_rate_last_ = rate;
         fluid_cum_ += Real(0.5) * (rate + fluid_rate_last_) * dt; // trapezoid in time

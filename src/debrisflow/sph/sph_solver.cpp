@@ -377,11 +377,10 @@ time::DtLimit SphSolver::initial_dt() const {
 
 void SphSolver::check_health(Real t) const {
     const Index n = set_.size();
-    Index bad = n;
     const Domain d = domain_;
     const auto& s = set_;
-#pragma omp parallel for reduction(min : bad)
-    for (Index i = 0; i < n; ++i) {
+    // the first bad particle (n: none)
+    const auto first_bad = [&](Index i, Index& bad) {
         const Real v[7] = {s.x[i], s.y[i], s.z[i], s.vx[i], s.vy[i], s.vz[i], s.rho[i]};
         bool ok = true;
         for (Real q : v) ok = ok && std::isfinite(q);
@@ -390,7 +389,8 @@ void SphSolver::check_health(Real t) const {
             if (!d.periodic[k] && (c < d.lo[k] || c > d.hi[k])) ok = false;
         }
         if (!ok && i < bad) bad = i;
-    }
+    };
+    const Index bad = exec::reduce(n, n, first_bad, [](Index& b, Index v) { b = v < b ? v : b; });
     if (bad == n) return;
     const bool finite = std::isfinite(s.x[bad]) && std::isfinite(s.vx[bad]) &&
                         std::isfinite(s.rho[bad]) && std::isfinite(s.z[bad]);
