@@ -39,7 +39,7 @@ TEST(DensityDiffusion, FourtakasVanishesForHydrostaticState) {
         std::get<models::MolteniColagrossi>(sph::SphModels::from_params(p).diffusion);
     const models::TaitEos eos(1000, 20, 7);
     const double dz = 0.01, depth = 0.5;
-    sph::PairState s{};
+    models::PairState s{};
     s.r = {0, 0, -dz}; // i below j
     s.r2 = dz * dz;
     s.f = -1e6;

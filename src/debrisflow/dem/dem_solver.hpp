@@ -118,6 +118,9 @@ public:
 private:
     // Below this many grains the loops run on one thread (OpenMP start-up would dominate).
     static constexpr Index parallel_min = 4096;
+    // Largest step accepted from the user: a fifth of the shortest contact time (about 0.6 / w,
+    // inside the 2 / w stability bound of velocity Verlet with room for several contacts).
+    static constexpr Real stability_fraction = 0.2;
     // What a drift reports: the largest speed squared, and how many grains left the domain.
     struct DriftReport {
         Real vmax2 = 0;

@@ -2,6 +2,7 @@
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/core/stopwatch.hpp"
 #include "debrisflow/exec/parallel.hpp"
+#include "debrisflow/fem/corotation.hpp"
 #include "debrisflow/fem/element_matrices.hpp"
 #include <Eigen/Dense>
 #include <cmath>
@@ -12,56 +13,6 @@
 namespace debrisflow::fem {
 
 namespace {
-
-using VecN = Eigen::Matrix<Real, Eigen::Dynamic, 1, 0, 30, 1>;
-using Vec6 = Eigen::Matrix<Real, Eigen::Dynamic, 1, 0, 6, 1>;
-
-// World component of local component k (2D solids live in the x-z plane).
-inline int world_axis(int dim, int k) {
-    return dim == 3 ? k : 2 * k;
-}
-
-// Rotation of the polar decomposition F = R U (dim x dim, in the leading block of a 3x3).
-Eigen::Matrix3d polar_rotation(const Eigen::Matrix3d& F, int dim) {
-    Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
-    if (dim == 2) {
-        const Real th = std::atan2(F(1, 0) - F(0, 1), F(0, 0) + F(1, 1));
-        R(0, 0) = R(1, 1) = std::cos(th);
-        R(1, 0) = std::sin(th);
-        R(0, 1) = -R(1, 0);
-        return R;
-    }
-    // Newton's polar iteration R <- (R + R^-T) / 2 from F (Higham 1986): quadratic convergence,
-    // a few 3x3 inverses; the SVD only for inverted elements.
-    if (F.determinant() > 0) {
-        Eigen::Matrix3d R = F;
-        for (int it = 0; it < 30; ++it) {
-            const Eigen::Matrix3d next = Real(0.5) * (R + R.inverse().transpose());
-            const Real change = (next - R).cwiseAbs().maxCoeff();
-            R = next;
-            if (change < Real(1e-14)) break;
-        }
-        return R;
-    }
-    Eigen::JacobiSVD<Eigen::Matrix3d> svd(F, Eigen::ComputeFullU | Eigen::ComputeFullV);
-    Eigen::Matrix3d U = svd.matrixU();
-    const Eigen::Matrix3d V = svd.matrixV();
-    if ((U * V.transpose()).determinant() < 0) U.col(2) *= -1;
-    return U * V.transpose();
-}
-
-// Principal values of a Voigt strain (engineering shears) in dim dimensions (plane strain:
-// the third is 0).
-Eigen::Vector3d principal_strains(const Vec6& e, int dim) {
-    if (dim == 2) {
-        const Real c = (e[0] + e[1]) / 2, r = std::hypot((e[0] - e[1]) / 2, e[2] / 2);
-        return {c + r, 0, c - r};
-    }
-    Eigen::Matrix3d t;
-    t << e[0], e[3] / 2, e[5] / 2, e[3] / 2, e[1], e[4] / 2, e[5] / 2, e[4] / 2, e[2];
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(t, Eigen::EigenvaluesOnly);
-    return eig.eigenvalues().reverse();
-}
 
 Real interpolate(const std::vector<Real>& t, const std::vector<Real>& v, Real at) {
     if (t.empty()) return 1;
@@ -219,42 +170,6 @@ void FemSolver::initialize() {
 }
 
 namespace {
-
-// Corotational frame of an element (Felippa & Haugen 2005): the rotation R of the polar
-// decomposition of F = sum (x_a - x_c) (x) g_a at the centre, the local displacements
-// u = R^T (x_a - x_c) - (X_a - X_c) and, when w is given, the local velocities R^T v_a.
-template <int DIM>
-inline Eigen::Matrix3d corotate(int nn, const std::int32_t* c, const Real* g, const Vec3* X,
-                                const Vec3* x, const Vec3* v, Real* u, Real* w) {
-    Vec3 xc{}, Xc{};
-    for (int a = 0; a < nn; ++a) {
-        xc = xc + x[c[a]];
-        Xc = Xc + X[c[a]];
-    }
-    xc = (Real(1) / nn) * xc;
-    Xc = (Real(1) / nn) * Xc;
-    Eigen::Matrix3d F = Eigen::Matrix3d::Zero();
-    for (int a = 0; a < nn; ++a) {
-        const Vec3 d = x[c[a]] - xc;
-        for (int i = 0; i < DIM; ++i)
-            for (int j = 0; j < DIM; ++j)
-                F(i, j) += d[world_axis(DIM, i)] * g[a + j * nn]; // g is nn x DIM
-    }
-    const Eigen::Matrix3d R = polar_rotation(F, DIM);
-    for (int a = 0; a < nn; ++a) {
-        const Vec3 d = x[c[a]] - xc, D = X[c[a]] - Xc;
-        for (int i = 0; i < DIM; ++i) {
-            Real rd = 0, rv = 0;
-            for (int j = 0; j < DIM; ++j) {
-                rd += R(j, i) * d[world_axis(DIM, j)];
-                if (w) rv += R(j, i) * v[c[a]][world_axis(DIM, j)];
-            }
-            u[a * DIM + i] = rd - D[world_axis(DIM, i)];
-            if (w) w[a * DIM + i] = rv;
-        }
-    }
-    return R;
-}
 
 // Corotational force of element e of a solid with NN nodes in DIM dimensions (fixed sizes so
 // that K_e u is an unrolled small product): f = -(1 - D) R K_e (R^T (x - x_c) - (X - X_c)),
@@ -459,87 +374,6 @@ void FemSolver::check_health(Real t) const {
 void FemSolver::add_timings(time::Timings& t) const {
     t.forces += t_forces_;
     t.integration += t_integrate_;
-}
-
-ElementResult FemSolver::element_result(std::size_t si, std::size_t e) const {
-    const Solid& s = solids_[si];
-    const int dim = params_.dim, nn = nodes_of(s.type), ndof = nn * dim, ns = dim == 3 ? 6 : 3;
-    const FemMaterial& mat = materials_[std::size_t(s.material)];
-    ElementResult r;
-    r.damage = s.damage[e];
-    r.eroded = s.eroded[e] != 0;
-    const std::int32_t* c = &s.conn[e * std::size_t(nn)];
-    const std::size_t k = std::size_t(s.shape[e]);
-    const Real* g = &s.gradient[k * std::size_t(nn * dim)];
-    VecN u(ndof);
-    const Eigen::Matrix3d R =
-        dim == 3 ? corotate<3>(nn, c, g, X_.data(), x_.data(), nullptr, u.data(), nullptr)
-                 : corotate<2>(nn, c, g, X_.data(), x_.data(), nullptr, u.data(), nullptr);
-    const Eigen::Map<const Eigen::MatrixXd> S(&s.strain_op[k * std::size_t(ns * ndof)], ns, ndof);
-    const Vec6 eps = S * u;
-    const Eigen::MatrixXd C = elasticity_matrix(mat.youngs_modulus, mat.poisson, dim);
-    const Vec6 sig = (1 - r.damage) * (C * eps);
-    // Local tensors (3x3, world axes x, y, z) rotated back: T = R t R^T.
-    Eigen::Matrix3d te = Eigen::Matrix3d::Zero(), ts = Eigen::Matrix3d::Zero();
-    if (dim == 3) {
-        te << eps[0], eps[3] / 2, eps[5] / 2, eps[3] / 2, eps[1], eps[4] / 2, eps[5] / 2,
-            eps[4] / 2, eps[2];
-        ts << sig[0], sig[3], sig[5], sig[3], sig[1], sig[4], sig[5], sig[4], sig[2];
-        te = R * te * R.transpose();
-        ts = R * ts * R.transpose();
-    } else { // local (x, z) block; y is the plane-strain direction
-        Eigen::Matrix2d e2, s2, R2 = R.topLeftCorner<2, 2>();
-        e2 << eps[0], eps[2] / 2, eps[2] / 2, eps[1];
-        s2 << sig[0], sig[2], sig[2], sig[1];
-        e2 = R2 * e2 * R2.transpose();
-        s2 = R2 * s2 * R2.transpose();
-        te(0, 0) = e2(0, 0), te(2, 2) = e2(1, 1), te(0, 2) = te(2, 0) = e2(0, 1);
-        ts(0, 0) = s2(0, 0), ts(2, 2) = s2(1, 1), ts(0, 2) = ts(2, 0) = s2(0, 1);
-        ts(1, 1) = mat.poisson * (sig[0] + sig[1]); // plane strain
-    }
-    r.strain = {te(0, 0), te(1, 1), te(2, 2), te(0, 1), te(1, 2), te(0, 2)};
-    r.stress = {ts(0, 0), ts(1, 1), ts(2, 2), ts(0, 1), ts(1, 2), ts(0, 2)};
-    const Real sxx = ts(0, 0), syy = ts(1, 1), szz = ts(2, 2);
-    r.von_mises = std::sqrt(Real(0.5) * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) +
-                                         (szz - sxx) * (szz - sxx)) +
-                            3 * (ts(0, 1) * ts(0, 1) + ts(1, 2) * ts(1, 2) + ts(0, 2) * ts(0, 2)));
-    r.max_principal_strain = principal_strains(eps, dim)[0];
-    return r;
-}
-
-Eigen::MatrixXd FemSolver::assemble_stiffness() const {
-    const int dim = params_.dim;
-    const Eigen::Index n = Eigen::Index(X_.size()) * dim;
-    Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
-    for (const auto& s : solids_) {
-        const int nn = nodes_of(s.type), ndof = nn * dim;
-        for (std::size_t e = 0; e < s.volume.size(); ++e) {
-            if (s.eroded[e]) continue;
-            const Eigen::Map<const Eigen::MatrixXd> ke(
-                &s.stiffness[std::size_t(s.shape[e]) * std::size_t(ndof * ndof)], ndof, ndof);
-            const std::int32_t* c = &s.conn[e * std::size_t(nn)];
-            for (int a = 0; a < nn; ++a)
-                for (int b = 0; b < nn; ++b)
-                    K.block(c[a] * dim, c[b] * dim, dim, dim) +=
-                        (1 - s.damage[e]) * ke.block(a * dim, b * dim, dim, dim);
-        }
-    }
-    return K;
-}
-
-Eigen::VectorXd FemSolver::dof_masses() const {
-    const int dim = params_.dim;
-    Eigen::VectorXd m(Eigen::Index(X_.size()) * dim);
-    for (std::size_t i = 0; i < X_.size(); ++i)
-        for (int k = 0; k < dim; ++k) m[Eigen::Index(i) * dim + k] = mass_[i];
-    return m;
-}
-
-long FemSolver::eroded_elements() const {
-    long n = 0;
-    for (const auto& s : solids_)
-        for (auto e : s.eroded) n += e;
-    return n;
 }
 
 } // namespace debrisflow::fem

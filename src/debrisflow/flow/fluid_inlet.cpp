@@ -1,6 +1,6 @@
 #include "debrisflow/flow/fluid_inlet.hpp"
 #include "debrisflow/exec/parallel.hpp"
-#include "debrisflow/io/flow_reader.hpp"
+#include "debrisflow/io/case_spec.hpp"
 #include "debrisflow/sph/sph_params.hpp"
 #include <cmath>
 
@@ -8,7 +8,7 @@ namespace debrisflow::flow {
 
 FluidInlet::FluidInlet(const io::InletSpec& spec, const io::CaseSpec& c)
     : spec_(spec), q_{spec.times, spec.discharge}, eos_(c.sph.rho0, c.sph.c0, c.sph.gamma),
-      dp_(c.dp), rho0_(c.sph.rho0), area_(io::inlet_area(spec, c.dim)),
+      dp_(c.dp), rho0_(c.sph.rho0), area_(spec.area(c.dim)),
       g_down_(c.sph.gravity.z < 0 ? -c.sph.gravity.z : 0), dim_(c.dim),
       group_(std::int16_t(spec.fluid)) {}
 

@@ -189,6 +189,13 @@ struct InletSpec {
     Real every = 0.01; // sampling interval of its CSV [s]
     std::size_t fluid = 0;
     Origin origin; // where the block is in the case file
+    // Cross-section normal to the flow [m^2] (2D: its height x 1 m).
+    Real area(int dim) const {
+        Real a = 1;
+        for (int k = 0; k < 3; ++k)
+            if (k != axis && !(dim == 2 && k == 1)) a *= max[k] - min[k];
+        return a;
+    }
 };
 
 // Sink: fluid particles and grains inside the box `min`-`max` are removed and counted.

@@ -16,13 +16,6 @@ void read_box(const ConfigTable& t, int dim, Vec3& lo, Vec3& hi) {
 }
 } // namespace
 
-Real inlet_area(const InletSpec& in, int dim) {
-    Real a = 1;
-    for (int k = 0; k < 3; ++k)
-        if (k != in.axis && !(dim == 2 && k == 1)) a *= in.max[k] - in.min[k];
-    return a;
-}
-
 void read_inlets(const ConfigTable& root, CaseSpec& c) {
     for (const auto& t : root.tables("inlet")) {
         InletSpec in;
@@ -56,7 +49,7 @@ void read_inlets(const ConfigTable& root, CaseSpec& c) {
         t.finish();
         FluidSpec f;
         f.origin = t.origin();
-        f.velocity[in.axis] = in.sign * in.discharge.front() / inlet_area(in, c.dim);
+        f.velocity[in.axis] = in.sign * in.discharge.front() / in.area(c.dim);
         f.name = in.name;
         f.shape.type = "box";
         f.shape.min = in.min;

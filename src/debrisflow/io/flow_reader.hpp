@@ -4,8 +4,6 @@
 
 namespace debrisflow::io {
 
-// Cross-section of an inlet normal to its flow [m^2] (2D: its height x 1 m).
-Real inlet_area(const InletSpec& in, int dim);
 // Reads [[inlet]] blocks (after the [[fluid]] blocks: each inlet adds its buffer as a fluid).
 void read_inlets(const ConfigTable& root, CaseSpec& c);
 // Reads [[outlet]] blocks.

@@ -1,12 +1,10 @@
 #pragma once
 #include "debrisflow/core/hd.hpp"
 #include "debrisflow/models/diffusion_context.hpp"
-#include "debrisflow/sph/pair_state_k.hpp"
+#include "debrisflow/models/pair_state_k.hpp"
 #include <cmath>
 
 namespace debrisflow::models {
-
-using sph::PairState;
 
 // Each model gives both sides of a fluid-fluid pair: drho_i += d.first, drho_j += d.second.
 // Each also says how its parameters follow from the fluid (static configure(context), host

@@ -1,12 +1,10 @@
 #pragma once
 #include "debrisflow/core/hd.hpp"
+#include "debrisflow/models/pair_state_k.hpp"
 #include "debrisflow/models/viscosity_context.hpp"
-#include "debrisflow/sph/pair_state_k.hpp"
 #include <cmath>
 
 namespace debrisflow::models {
-
-using sph::PairState;
 
 // Generalised-Newtonian slurries: each fluid particle carries an apparent dynamic viscosity
 // mu_app(gamma_dot, p) computed before the force loop from its SPH strain rate

@@ -1,11 +1,9 @@
 #pragma once
 #include "debrisflow/core/hd.hpp"
+#include "debrisflow/models/pair_state_k.hpp"
 #include "debrisflow/models/viscosity_context.hpp"
-#include "debrisflow/sph/pair_state_k.hpp"
 
 namespace debrisflow::models {
-
-using sph::PairState;
 
 // Every model returns G_ij with a_i += m_j G_ij and a_j -= m_i G_ij (momentum-conserving),
 // and builds itself from the [sph] table with from_config(table, ViscosityContext): its own

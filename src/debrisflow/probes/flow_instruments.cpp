@@ -2,6 +2,7 @@
 #include "debrisflow/dem/dem_solver.hpp"
 #include "debrisflow/exec/parallel.hpp"
 #include "debrisflow/rigid/body_solver.hpp"
+#include "debrisflow/sph/sph_solver.hpp"
 #include <algorithm>
 #include <cmath>
 

@@ -1,7 +1,6 @@
 #pragma once
 #include "debrisflow/io/case_spec.hpp"
 #include "debrisflow/probes/probe_setup.hpp"
-#include "debrisflow/sph/sph_solver.hpp"
 #include <fstream>
 #include <memory>
 #include <string>
@@ -10,6 +9,9 @@
 
 namespace debrisflow::checkpoint {
 class Archive;
+}
+namespace debrisflow::sph {
+class SphSolver;
 }
 namespace debrisflow::dem {
 class DemSolver;

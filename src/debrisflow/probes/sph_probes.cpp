@@ -1,4 +1,5 @@
 #include "debrisflow/probes/sph_probes.hpp"
+#include "debrisflow/sph/sph_solver.hpp"
 #include <cmath>
 #include <limits>
 

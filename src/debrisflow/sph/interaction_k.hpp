@@ -1,10 +1,10 @@
 #pragma once
 #include "debrisflow/models/density_diffusion_k.hpp"
 #include "debrisflow/models/eos_tait_k.hpp"
+#include "debrisflow/models/pair_state_k.hpp"
 #include "debrisflow/neighbors/grid_view_k.hpp"
 #include "debrisflow/particles/particle_set.hpp"
 #include "debrisflow/sph/apparent_viscosity_k.hpp"
-#include "debrisflow/sph/pair_state_k.hpp"
 
 namespace debrisflow::sph {
 
@@ -55,7 +55,7 @@ template <class Kernel, class Viscosity, class Diffusion> struct PairTerms {
     }
 
     DF_HD Result operator()(const Side& a, Index i, const Side& b, Index j, Vec3 r, Real r2) const {
-        PairState s;
+        models::PairState s;
         s.r = r;
         s.r2 = r2;
         s.f = kernel.grad_over_r(std::sqrt(r2));

@@ -1,9 +1,10 @@
 #pragma once
 #include "debrisflow/core/vec3_k.hpp"
 
-namespace debrisflow::sph {
+namespace debrisflow::models {
 
-// Everything a per-pair SPH term needs about particles i and j (r = x_i - x_j, v = v_i - v_j).
+// Everything a per-pair SPH term (viscosity, rheology, density diffusion) needs about particles i
+// and j (r = x_i - x_j, v = v_i - v_j).
 struct PairState {
     Vec3 r;
     Real r2;
@@ -20,4 +21,4 @@ struct PairState {
     bool boundary_j; // j is a boundary particle
 };
 
-} // namespace debrisflow::sph
+} // namespace debrisflow::models
