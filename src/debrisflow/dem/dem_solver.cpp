@@ -185,7 +185,7 @@ void DemSolver::kick_drift(Real h) {
     const Domain dom = domain_;
     GrainState* hot = hot_.data();
     const std::int32_t* clump_of = clump_of_id_.empty() ? nullptr : clump_of_id_.data();
-    const auto move_grain = [&](Index i, DriftReport& out) {
+    const auto move_grain = [=](Index i, DriftReport& out) {
         if (clump_of && clump_of[g.id[i]] >= 0) return; // moved with its clump below
         // v_n+1/2 = v_n + (h/2) a_n drives the drift; the stored velocity is then the
         // prediction v* = v_n+1/2 + (h/2) a_n, so that the dashpots see the velocity at the time
