@@ -29,7 +29,6 @@ public:
 
     const char* coupling_name() const override { return "dem-rigid"; }
     std::vector<Exchange> exchanges() const override;
-    const dem::ObstacleSet& obstacles() const { return obstacles_; }
 
     // Saves or restores the spheres and the impulse not yet collected
     // (coupling/coupling_checkpoint.cpp).
