@@ -89,6 +89,12 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
     // Scalars and pointers by value: a by-reference capture would be reloaded after every
     // store through acc (the compiler cannot rule out aliasing), about 6 % of the loop.
     exec::team(nt, [=, this, &wl, &prims, &corners](const exec::Team& team) {
+        // Locals, not the closure's members: the closure is reached through a pointer in the
+        // parallel region, so its Real members would be reloaded after every store of a Real.
+        const PairTable tab = table;
+        const neighbors::GridView grd = grid;
+        const Real h_c = h_contact, h_now = current_h, h_half = half;
+        const Vec3 g_acc = grav;
         const int th = team.thread;
         ThreadSums& mine = thread_sums_[std::size_t(th)];
         long touching = 0;
@@ -107,7 +113,7 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
                 const std::size_t sk = base + std::size_t(k);
                 const HistoryRef h{gxi + sk, groll ? groll + sk : nullptr};
                 GrainPairForce c;
-                if (!grain_slot_force(table, grid, si, hot[j], h_contact, h, c)) continue;
+                if (!grain_slot_force(tab, grd, si, hot[j], h_c, h, c)) continue;
                 fi += c.force_i;
                 ti += c.torque_i;
                 if (j >= lo && j < hi) {
@@ -144,7 +150,7 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
             // a clump member's force is its contacts'; gravity acts on the clump
             const bool member = clump_of && clump_of[g.id[i]] >= 0;
             const Real* ai = acc + 6 * std::size_t(i);
-            Vec3 f = (member ? Real(0) : g.mass[i]) * grav + Vec3{ai[0], ai[1], ai[2]};
+            Vec3 f = (member ? Real(0) : g.mass[i]) * g_acc + Vec3{ai[0], ai[1], ai[2]};
             Vec3 t{ai[3], ai[4], ai[5]};
             const std::size_t base = std::size_t(i) * std::size_t(wcap);
             const Index cw = wcount[i];
@@ -160,7 +166,7 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
                     }
                     const Vec3 q = closest_point(pr, si.x);
                     const Real d = wall_distance(pr, si.x, q);
-                    if (d >= si.r && !(table.adhesive &&
+                    if (d >= si.r && !(tab.adhesive &&
                                        within_reach(wall_pair(si.material, pr), d - si.r, si.r))) {
                         wall_history(base + std::size_t(k)).clear();
                         continue;
@@ -187,11 +193,11 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
                     }
                     const WallContactForce c2 =
                         wall_contact_force(wall_pair(si.material, pr), si, pr, cand.q[c], cand.d[c],
-                                           vw, h_contact, wall_history(base + std::size_t(k)));
+                                           vw, h_c, wall_history(base + std::size_t(k)));
                     if (nc && node_j) {
                         for (int a = 0; a < 3; ++a) {
                             Vec3& J = node_j[nc->node[std::size_t(a)]];
-                            const Vec3 dj = (-current_h * bw[a]) * c2.force;
+                            const Vec3 dj = (-h_now * bw[a]) * c2.force;
                             exec::atomic_add(J.x, dj.x);
                             exec::atomic_add(J.y, dj.y);
                             exec::atomic_add(J.z, dj.z);
@@ -221,14 +227,14 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
                     const Real rs = si.r + o.r, d2 = dot(r, r);
                     if (d2 == 0 ||
                         (d2 >= rs * rs &&
-                         !(table.adhesive && within_reach(table(si.material, o.material),
-                                                          std::sqrt(d2) - rs, si.r * o.r / rs)))) {
+                         !(tab.adhesive && within_reach(tab(si.material, o.material),
+                                                        std::sqrt(d2) - rs, si.r * o.r / rs)))) {
                         hk.clear();
                         continue;
                     }
                     const GrainState so{o.x, o.v, o.w, o.r, o.m, o.material};
-                    const GrainPairForce c = grain_pair_force(table(si.material, o.material), si,
-                                                              so, r, d2, h_contact, hk);
+                    const GrainPairForce c =
+                        grain_pair_force(tab(si.material, o.material), si, so, r, d2, h_c, hk);
                     f += c.force_i;
                     t += c.torque_i;
                     const Vec3 tb = c.torque_j + cross(o.x - ocom[o.body], -c.force_i);
@@ -243,14 +249,14 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
                 const Vec3 ff = ffix[i] + fbeta[i] * (fu[i] - hot[i].v);
                 f += ff;
                 // the kicks of this step gave the grain h/2 (f_n + f_n+1)
-                if (fimp) fimp[i] += (Real(0.5) * current_h) * (ffelt[i] + ff);
+                if (fimp) fimp[i] += (Real(0.5) * h_now) * (ffelt[i] + ff);
                 ffelt[i] = ff;
             }
             if (plane) f.y = 0, t.x = 0, t.z = 0;
-            if (half > 0 && !member) {
+            if (h_half > 0 && !member) {
                 const Real im = g.inv_mass[i], ii = g.inv_inertia[i];
-                g.vel[i] += (half * im) * (f - g.force[i]);
-                g.spin[i] += (half * ii) * (t - g.torque[i]);
+                g.vel[i] += (h_half * im) * (f - g.force[i]);
+                g.spin[i] += (h_half * ii) * (t - g.torque[i]);
             }
             g.force[i] = f;
             g.torque[i] = t;
