@@ -53,8 +53,9 @@ TEST(CouplingOrder, EveryRuleHoldsForEverySubsetInAnyGivenOrder) {
         ASSERT_EQ(order.size(), std::size_t(std::popcount(mask)));
         for (const auto& r : coupling::order_rules()) {
             const std::size_t b = position(order, r.before), a = position(order, r.after);
-            if (b < order.size() && a < order.size())
+            if (b < order.size() && a < order.size()) {
                 EXPECT_LT(b, a) << r.before << " before " << r.after << " (" << r.why << ")";
+            }
         }
     }
 }
@@ -83,9 +84,21 @@ TEST(CouplingOrder, RulesNameKnownPhases) {
     }
 }
 
-// A case with fluid, grains and the fluid drag: the SPH-DEM coupling is a phase after the SPH
-// and DEM phases, and every exchange it states is backed by an order rule from its source.
-TEST(CouplingOrder, FluidGrainCouplingStatesItsExchanges) {
+namespace {
+// What backs an exchange in the force evaluation: a rule that puts its source before its
+// destination, or before the coupling's own phase (sph-dem is a phase).
+bool backed_by_rule(const coupling::Exchange& e, const std::string& coupling_phase) {
+    const auto& rules = coupling::order_rules();
+    return std::any_of(rules.begin(), rules.end(), [&](const coupling::OrderRule& r) {
+        return r.before == e.from && (r.after == e.to || r.after == coupling_phase);
+    });
+}
+} // namespace
+
+// A case with fluid, grains (with the fluid drag) and a floating body: the sph-dem, sph-rigid
+// and dem-rigid couplings state their exchanges; each goes from one model to another, both
+// directions are there, and every exchange in the force evaluation is backed by an order rule.
+TEST(CouplingOrder, CouplingsStateTheirExchanges) {
     const std::string toml = R"(
 name = "coupling_order"
 dimensions = 3
@@ -94,59 +107,63 @@ dp = 0.02
 end = 0.01
 [output]
 vtk = false
-[physics]
-gravity = [0, 0, 0]
 [domain]
-min = [0, 0, 0]
-max = [0.2, 0.2, 0.2]
-periodic = ["x", "y", "z"]
+min = [-0.1, -0.1, -0.1]
+max = [0.4, 0.4, 0.4]
 [sph]
 rho0 = 1000
-c0 = 5
+c0 = 10
 viscosity = "laminar"
-nu = 1e-2
+nu = 1e-3
 [[fluid]]
 name = "water"
 shape = "box"
 min = [0.0, 0.0, 0.0]
-max = [0.2, 0.2, 0.2]
+max = [0.3, 0.3, 0.2]
+[[wall]]
+name = "tank"
+shape = "open_tank"
+min = [0.0, 0.0, 0.0]
+max = [0.3, 0.3, 0.3]
 [[material]]
-name = "sand"
+name = "gravel"
 density = 2650
-law = "hertz_mindlin"
-youngs_modulus = 1e7
-poisson = 0.3
+law = "linear"
+kn = 1e4
 restitution = 0.5
-friction = 0.3
+friction = 0.4
 [[grains]]
-name = "a"
-material = "sand"
+name = "stone"
+material = "gravel"
 packing = "single"
-position = [0.05, 0.1, 0.1]
-diameter = 0.005
+position = [0.1, 0.15, 0.1]
+diameter = 0.01
 [dem]
 fluid_drag = "di_felice"
 reference_velocity = 1.0
+[[body]]
+name = "log"
+material = "gravel"
+density = 500
+shape = "box"
+min = [0.18, 0.1, 0.16]
+max = [0.26, 0.2, 0.24]
 )";
     app::Simulation sim(test::case_from_toml("coupling_order", toml));
-    const auto couplings = sim.couplings();
-    ASSERT_EQ(couplings.size(), 1u);
-    const coupling::Coupling& c = *couplings[0];
-    EXPECT_STREQ(c.coupling_name(), "sph-dem");
-    const auto ex = c.exchanges();
-    ASSERT_EQ(ex.size(), 2u);
-    std::set<std::string> sources;
-    for (const auto& e : ex) {
-        EXPECT_EQ(e.when, coupling::When::force_evaluation);
-        EXPECT_NE(e.from, e.to);
-        sources.insert(e.from);
-        EXPECT_FALSE(coupling::describe(e).empty());
+    std::set<std::string> names;
+    for (const coupling::Coupling* c : sim.couplings()) {
+        names.insert(c->coupling_name());
+        std::set<std::pair<std::string, std::string>> directions;
+        for (const auto& e : c->exchanges()) {
+            EXPECT_NE(e.from, e.to) << coupling::describe(e);
+            EXPECT_FALSE(e.what.empty());
+            directions.insert({e.from, e.to});
+            if (e.when == coupling::When::force_evaluation) {
+                EXPECT_TRUE(backed_by_rule(e, c->coupling_name())) << coupling::describe(e);
+            }
+        }
+        for (const auto& [from, to] : directions) // two-way
+            EXPECT_TRUE(directions.count({to, from})) << c->coupling_name() << ": " << from;
     }
-    EXPECT_EQ(sources, (std::set<std::string>{"sph", "dem"}));
-    for (const auto& s : sources)
-        EXPECT_TRUE(std::any_of(coupling::order_rules().begin(), coupling::order_rules().end(),
-                                [&](const coupling::OrderRule& r) {
-                                    return r.before == s && std::string(r.after) == "sph-dem";
-                                }))
-            << s;
+    EXPECT_EQ(names, (std::set<std::string>{"sph-dem", "sph-rigid", "dem-rigid"}));
 }

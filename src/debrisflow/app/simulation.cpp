@@ -46,9 +46,12 @@ Simulation::Simulation(io::CaseSpec spec)
                 dem_walls_.walls()[std::size_t(p->contact_wall())].record_contacts = true;
     }
     if (fem_ && (spec_.has_dem || spec_.has_bodies())) couple_fem_to_contacts();
-    if (spec_.has_bodies())
-        rigid_ = scenario::make_body_solver(spec_, bodies, &dem_walls_, solver_ ? &set_ : nullptr,
-                                            first_body_particle);
+    if (spec_.has_bodies()) {
+        rigid_ = scenario::make_body_solver(spec_, bodies, &dem_walls_);
+        if (solver_)
+            sph_body_ = std::make_unique<coupling::SphBodyCoupling>(
+                *rigid_, set_, scenario::body_particles(bodies, first_body_particle));
+    }
     if (dem_fem_) dem_fem_->connect(rigid_.get());
     if (spec_.has_dem) {
         scenario::build_grains(spec_, grains_);
@@ -114,7 +117,7 @@ void Simulation::couple_fem_to_contacts() {
 std::vector<const coupling::Coupling*> Simulation::couplings() const {
     std::vector<const coupling::Coupling*> out;
     for (const coupling::Coupling* c : std::initializer_list<const coupling::Coupling*>{
-             sph_dem_.get(), dem_body_.get(), sph_fem_.get(), dem_fem_.get()})
+             sph_body_.get(), sph_dem_.get(), dem_body_.get(), sph_fem_.get(), dem_fem_.get()})
         if (c) out.push_back(c);
     return out;
 }

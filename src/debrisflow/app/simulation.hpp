@@ -3,6 +3,7 @@
 #include "debrisflow/core/log.hpp"
 #include "debrisflow/coupling/dem_body.hpp"
 #include "debrisflow/coupling/dem_fem.hpp"
+#include "debrisflow/coupling/sph_body.hpp"
 #include "debrisflow/coupling/sph_dem.hpp"
 #include "debrisflow/coupling/sph_fem.hpp"
 #include "debrisflow/coupling/step_order.hpp"
@@ -109,6 +110,7 @@ private:
     std::unique_ptr<coupling::DemFemCoupling> dem_fem_;   // with grains or bodies
     std::unique_ptr<coupling::SphDemCoupling> sph_dem_;   // grains in a fluid ([dem] fluid_drag)
     std::unique_ptr<coupling::DemBodyCoupling> dem_body_; // grains and bodies
+    std::unique_ptr<coupling::SphBodyCoupling> sph_body_; // bodies in a fluid
     bool settled_ = false;
     std::vector<std::unique_ptr<flow::FluidInlet>> inlets_;
     std::vector<std::unique_ptr<flow::Outlet>> outlets_;

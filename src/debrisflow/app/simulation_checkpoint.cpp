@@ -52,6 +52,7 @@ void Simulation::state(checkpoint::Archive& ar) {
     if (sph_dem_) sph_dem_->state(ar);
     if (dem_fem_) dem_fem_->state(ar);
     if (dem_body_) dem_body_->state(ar);
+    if (sph_body_) sph_body_->state(ar);
     for (auto& f : feeds_) f->state(ar);
     for (auto& f : rock_feeds_) f->state(ar);
     for (auto& in : inlets_) in->state(ar);

@@ -7,7 +7,9 @@ namespace debrisflow::checkpoint {
 
 // Checkpoint files: OUT/checkpoint/step_<step>.dfc, a 24-byte header (magic, format
 // version, CRC-32 of the payload, payload size) and the payload (an Archive's bytes).
-inline constexpr std::uint32_t format_version = 2; // 2: contact slots without rolling memory
+// 2: contact slots without rolling memory; 3: the bodies' boundary particles in the sph-rigid
+// coupling's section
+inline constexpr std::uint32_t format_version = 3;
 
 // Writes `payload` to `path` safely: into path + ".tmp", flushed to disk (fsync), then renamed
 // over `path`, so a kill at any moment leaves either the old file set or the new one.

@@ -12,6 +12,8 @@ const char* when_name(When w) {
         return "in the FEM force evaluation";
     case When::fem_motion:
         return "after each FEM advance";
+    case When::body_motion:
+        return "after each update of the bodies";
     case When::between_steps:
         return "between steps";
     }

@@ -17,6 +17,8 @@ enum class When {
     fem_loads,
     // After every FEM advance and prediction: what rides on the nodes follows them.
     fem_motion,
+    // After every update of the rigid bodies: what rides on them follows them.
+    body_motion,
     // After the integration, before the neighbour search (particles added or removed).
     between_steps,
 };

@@ -1,9 +1,10 @@
-// What the SPH-DEM, SPH-FEM, DEM-FEM and DEM-rigid couplings keep between steps, for checkpoints:
-// the boundary particles' rows in the elements (those exposed by erosion included), the surface
-// facets and how much erosion each coupling has seen.
+// What the couplings keep between steps, for checkpoints: the boundary particles' rows in the
+// elements (those exposed by erosion included) and on the bodies (those of bodies added during
+// the run included), the surface facets and how much erosion each coupling has seen.
 #include "debrisflow/checkpoint/archive.hpp"
 #include "debrisflow/coupling/dem_body.hpp"
 #include "debrisflow/coupling/dem_fem.hpp"
+#include "debrisflow/coupling/sph_body.hpp"
 #include "debrisflow/coupling/sph_dem.hpp"
 #include "debrisflow/coupling/sph_fem.hpp"
 
@@ -27,6 +28,16 @@ void DemBodyCoupling::state(checkpoint::Archive& ar) {
     ar.section("obstacles");
     dem::ObstacleSet& o = obstacles_;
     ar(o.spheres, o.body_com, o.impulse, o.angular_impulse, o.time, o.version);
+}
+
+void SphBodyCoupling::state(checkpoint::Archive& ar) {
+    ar.section("sph-rigid");
+    ar(rows_.owner, rows_.offset, rows_.normal, rows_.extra_rows);
+    if (rows_.offset.size() != rows_.owner.size() || rows_.normal.size() != rows_.owner.size() ||
+        rows_.owner.size() < initial_rows_)
+        ar.fail("body particle rows of mismatched lengths");
+    // The particles' indices follow from their ids at the next use.
+    if (ar.is_loading()) layout_seen_ = ~std::uint64_t(0);
 }
 
 void SphDemCoupling::state(checkpoint::Archive& ar) {

@@ -13,7 +13,7 @@ std::vector<Exchange> DemBodyCoupling::exchanges() const {
     return {{"rigid", "dem",
              "contact spheres' positions, velocities, masses and compliances (ObstacleSet "
              "spheres)",
-             When::force_evaluation},
+             When::body_motion},
             {"dem", "rigid",
              "grains' contact impulse and angular impulse per body over the time they cover "
              "(ObstacleSet impulse)",

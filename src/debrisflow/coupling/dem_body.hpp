@@ -15,7 +15,7 @@ class BodySolver;
 namespace debrisflow::coupling {
 
 // Two-way DEM <-> rigid-body contact through the bodies' contact spheres (dem::ObstacleSet):
-// the bodies write their spheres' positions and velocities whenever they move; the DEM
+// the bodies write their spheres' positions and velocities after every update; the DEM
 // evaluates each grain-sphere contact with the grain pair laws at every sub-step and sums the
 // reaction impulse per body (force and torque about its centre of mass); the bodies collect
 // that impulse over their own step, divided by the time it covers.

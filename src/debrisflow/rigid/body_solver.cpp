@@ -18,12 +18,8 @@ BodySolver::BodySolver(RigidParams params, std::vector<BodyState> bodies,
     for (auto& b : bodies_) apply_locks(b);
 }
 
-void BodySolver::attach_particles(particles::ParticleSet* set, BodyParticles particles) {
-    set_ = set;
-    particles_ = std::move(particles);
-    initial_rows_ = particles_.owner.size();
-    layout_seen_ = ~std::uint64_t(0);
-    refresh_members();
+void BodySolver::attach_fluid(FluidSide* fluid) {
+    fluid_ = fluid;
 }
 
 void BodySolver::attach_grains(dem::ObstacleSet* obstacles) {
@@ -75,43 +71,15 @@ int BodySolver::find(const std::string& name) const {
     return -1;
 }
 
-void BodySolver::refresh_members() {
-    if (!set_ || set_->layout_version() == layout_seen_) return;
-    layout_seen_ = set_->layout_version();
-    members_.clear();
-    rows_.clear();
-    for (Index i = 0; i < set_->size(); ++i) {
-        const long r = particles_.row(set_->id[i], initial_rows_);
-        if (r < 0) continue;
-        members_.push_back(i);
-        rows_.push_back(std::uint32_t(r));
-    }
-}
-
 bool BodySolver::remove_body(int b, std::vector<std::uint8_t>& keep) {
     BodyState& s = bodies_[std::size_t(b)];
     if (s.motion != Motion::free || joints_.involves(b)) return false;
     s.motion = Motion::removed;
     s.vel = s.ang_mom = s.prescribed_omega = {};
     s.inv_mass = 0;
-    if (set_) {
-        refresh_members();
-        keep.resize(std::size_t(set_->size()), 1);
-        for (std::size_t k = 0; k < members_.size(); ++k)
-            if (particles_.owner[rows_[k]] == b) keep[std::size_t(members_[k])] = 0;
-    }
+    if (fluid_) fluid_->release(b, keep);
     update_obstacles();
     return true;
-}
-
-std::size_t BodySolver::particles_of(int b) const {
-    std::size_t n = 0;
-    if (set_)
-        for (Index i = 0; i < set_->size(); ++i) {
-            const long r = particles_.row(set_->id[i], initial_rows_);
-            n += r >= 0 && particles_.owner[std::size_t(r)] == b;
-        }
-    return n;
 }
 
 int BodySolver::add_body(BodyState state, BodyModel model, const std::vector<ShellPoint>& shell,
@@ -128,48 +96,11 @@ int BodySolver::add_body(BodyState state, BodyModel model, const std::vector<She
         obstacles_->angular_impulse.emplace_back();
         update_obstacles();
     }
-    if (set_)
-        for (const auto& sp : shell) {
-            set_->add(sp.p, state.vel + cross(state.omega(), sp.p - state.pos), rho, m_particle,
-                      particles::Kind::boundary, std::int16_t(-1));
-            set_->set_wall(set_->size() - 1, sp.n, sp.depth);
-            particles_.extra_rows.emplace(set_->id.back(), std::uint32_t(particles_.owner.size()));
-            particles_.owner.push_back(b);
-            particles_.offset.push_back(rotate_inverse(state.q, sp.p - state.pos));
-            particles_.normal.push_back(rotate_inverse(state.q, sp.n));
-        }
+    if (fluid_) fluid_->add_shell(b, state, shell, rho, m_particle);
     return b;
 }
 
-void BodySolver::move_particles(bool positions) {
-    if (!set_) return;
-    refresh_members();
-    auto pv = set_->view();
-    const Index* mem = members_.data();
-    const std::uint32_t* rows = rows_.data();
-    const std::int32_t* owner = particles_.owner.data();
-    const Vec3 *off = particles_.offset.data(), *nrm = particles_.normal.data();
-    const BodyState* bs = bodies_.data();
-    exec::for_each(Index(members_.size()), [=](Index k) {
-        const Index i = mem[k];
-        const std::size_t r = rows[k];
-        const BodyState& b = bs[owner[r]];
-        const Vec3 arm = rotate(b.q, off[r]);
-        if (positions) {
-            pv.x[i] = b.pos.x + arm.x;
-            pv.y[i] = b.pos.y + arm.y;
-            pv.z[i] = b.pos.z + arm.z;
-            const Vec3 n = rotate(b.q, nrm[r]);
-            pv.wnx[i] = n.x, pv.wny[i] = n.y, pv.wnz[i] = n.z; // into the fluid
-        }
-        const Vec3 v = b.vel + cross(b.omega(), arm);
-        pv.vx[i] = v.x, pv.vy[i] = v.y, pv.vz[i] = v.z;
-    });
-}
-
-void BodySolver::update_neighbors(bool) {
-    refresh_members();
-}
+void BodySolver::update_neighbors(bool) {}
 
 Vec3 BodySolver::total_force(int b) const {
     const BodyLoads& l = loads_[b];
@@ -186,18 +117,7 @@ Vec3 BodySolver::total_torque(int b) const {
 void BodySolver::compute_forces() {
     ScopedTimer timer(t_forces_);
     for (auto& l : loads_) l = {};
-    if (set_) {
-        refresh_members();
-        for (std::size_t k = 0; k < members_.size(); ++k) {
-            const Index i = members_[k];
-            const std::size_t r = rows_[k];
-            const int b = particles_.owner[r];
-            const Vec3 f = set_->mass[i] * Vec3{set_->ax[i], set_->ay[i], set_->az[i]};
-            const Vec3 x{set_->x[i], set_->y[i], set_->z[i]};
-            loads_[b].fluid_force += f;
-            loads_[b].fluid_torque += cross(x - bodies_[b].pos, f);
-        }
-    }
+    if (fluid_) fluid_->add_loads(bodies_, loads_);
     if (obstacles_) {
         auto& o = *obstacles_;
         if (o.time > 0)

@@ -76,15 +76,8 @@ void BodySolver::state(checkpoint::Archive& ar) {
     for (std::size_t k = 0; k < impulse.size(); ++k) joints_.joints()[k].impulse = impulse[k];
     contacts_.state(ar);
     recorder_.state(ar);
-    // boundary particles of the bodies (rows of bodies added during the run included)
-    ar(particles_.owner, particles_.offset, particles_.normal, particles_.extra_rows);
-    if (particles_.offset.size() != particles_.owner.size() ||
-        particles_.normal.size() != particles_.owner.size())
-        ar.fail("body particle rows of mismatched lengths");
     if (ar.is_loading() && (loads_.size() != count || (obstacles_ && grain_force_.size() != count)))
         ar.fail("body loads that do not match its bodies");
-    // The body particles' indices follow from their ids at the next evaluation.
-    if (ar.is_loading()) layout_seen_ = ~std::uint64_t(0);
 }
 
 } // namespace debrisflow::rigid

@@ -34,9 +34,9 @@ std::vector<BuiltBody> build_body_geometry(const io::CaseSpec& c) {
     return out;
 }
 
-std::unique_ptr<rigid::BodySolver>
-make_body_solver(const io::CaseSpec& c, const std::vector<BuiltBody>& built,
-                 const dem::WallSet* walls, particles::ParticleSet* set, ParticleId first_id) {
+std::unique_ptr<rigid::BodySolver> make_body_solver(const io::CaseSpec& c,
+                                                    const std::vector<BuiltBody>& built,
+                                                    const dem::WallSet* walls) {
     std::vector<rigid::BodyState> states;
     std::vector<rigid::BodyModel> models;
     for (const auto& b : built) {
@@ -81,23 +81,23 @@ make_body_solver(const io::CaseSpec& c, const std::vector<BuiltBody>& built,
     p.dim = c.dim;
     p.domain = c.domain;
     auto table = dem::build_pair_table(c.dem.materials, c.dem.overrides, "none");
-    auto solver = std::make_unique<rigid::BodySolver>(
+    return std::make_unique<rigid::BodySolver>(
         p, std::move(states), std::move(models), std::move(joints),
         rigid::BodyContacts(std::move(table), int(c.dem.materials.size())), walls);
-    if (set && !c.fluids.empty()) {
-        rigid::BodyParticles bp;
-        bp.first_id = first_id;
-        for (std::size_t b = 0; b < built.size(); ++b) {
-            const auto& s = built[b].state;
-            for (const auto& sp : built[b].sph_points) {
-                bp.owner.push_back(std::int32_t(b));
-                bp.offset.push_back(rigid::rotate_inverse(s.q, sp.p - s.pos));
-                bp.normal.push_back(rigid::rotate_inverse(s.q, sp.n));
-            }
+}
+
+coupling::BodyParticles body_particles(const std::vector<BuiltBody>& built, ParticleId first_id) {
+    coupling::BodyParticles bp;
+    bp.first_id = first_id;
+    for (std::size_t b = 0; b < built.size(); ++b) {
+        const auto& s = built[b].state;
+        for (const auto& sp : built[b].sph_points) {
+            bp.owner.push_back(std::int32_t(b));
+            bp.offset.push_back(rigid::rotate_inverse(s.q, sp.p - s.pos));
+            bp.normal.push_back(rigid::rotate_inverse(s.q, sp.n));
         }
-        solver->attach_particles(set, std::move(bp));
     }
-    return solver;
+    return bp;
 }
 
 } // namespace debrisflow::scenario
