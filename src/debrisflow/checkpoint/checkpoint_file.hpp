@@ -7,8 +7,8 @@ namespace debrisflow::checkpoint {
 
 // Checkpoint files: OUT/checkpoint/step_<step>.dfc, a 24-byte header (magic, format
 // version, CRC-32 of the payload, payload size) and the payload (an Archive's bytes).
-// 2: contact slots without rolling memory; 3: the bodies' boundary particles in the sph-rigid
-// coupling's section
+// 2: contact slots without rolling memory; 3: the bodies' boundary particles and the grains'
+// reaction on them in the sph-rigid and dem-rigid couplings' sections
 inline constexpr std::uint32_t format_version = 3;
 
 // Writes `payload` to `path` safely: into path + ".tmp", flushed to disk (fsync), then renamed

@@ -28,6 +28,10 @@ void DemBodyCoupling::state(checkpoint::Archive& ar) {
     ar.section("obstacles");
     dem::ObstacleSet& o = obstacles_;
     ar(o.spheres, o.body_com, o.impulse, o.angular_impulse, o.time, o.version);
+    ar(grain_force_, grain_torque_);
+    if (grain_force_.size() != o.body_com.size() || grain_torque_.size() != o.body_com.size() ||
+        o.impulse.size() != o.body_com.size() || o.angular_impulse.size() != o.body_com.size())
+        ar.fail("grain loads that do not match its bodies");
 }
 
 void SphBodyCoupling::state(checkpoint::Archive& ar) {

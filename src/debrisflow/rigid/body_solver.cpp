@@ -1,10 +1,6 @@
 #include "debrisflow/rigid/body_solver.hpp"
-#include "debrisflow/core/error.hpp"
 #include "debrisflow/core/stopwatch.hpp"
-#include "debrisflow/exec/parallel.hpp"
-#include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <limits>
 
 namespace debrisflow::rigid {
@@ -22,47 +18,9 @@ void BodySolver::attach_fluid(FluidSide* fluid) {
     fluid_ = fluid;
 }
 
-void BodySolver::attach_grains(dem::ObstacleSet* obstacles) {
-    obstacles_ = obstacles;
-    grain_force_.assign(bodies_.size(), {});
-    grain_torque_.assign(bodies_.size(), {});
-    obstacles_->impulse.assign(bodies_.size(), {});
-    obstacles_->angular_impulse.assign(bodies_.size(), {});
-    obstacles_->time = 0;
+void BodySolver::attach_grains(GrainSide* grains) {
+    grains_ = grains;
     update_obstacles();
-}
-
-void BodySolver::update_obstacles() {
-    if (!obstacles_) return;
-    auto& o = *obstacles_;
-    o.spheres.clear();
-    o.body_com.resize(bodies_.size());
-    for (std::size_t b = 0; b < bodies_.size(); ++b) {
-        const BodyState& s = bodies_[b];
-        o.body_com[b] = s.pos;
-        if (s.motion == Motion::removed) continue;
-        const bool free = s.motion == Motion::free;
-        const Real m = free ? s.mass : Real(1e20);
-        const Vec3 w = s.omega();
-        // the most compliant rotation the body may take (locked world axes left out, which for
-        // a principal frame turning only about a locked axis's normal is exact, else an upper
-        // bound)
-        Real inv_i = 0;
-        for (int k = 0; k < 3; ++k)
-            if (!s.lock_rotation[std::size_t(k)]) inv_i = std::max(inv_i, s.inv_inertia[k]);
-        for (const auto& sp : models_[b].samples) {
-            const Vec3 x = s.to_world(sp.center);
-            dem::ObstacleSphere o_s{x, s.point_velocity(x), w, sp.radius, m, s.material, int(b)};
-            if (free) {
-                const Real c = norm(sp.center);
-                o_s.normal_compliance = 1 / s.mass + c * c * inv_i;
-                o_s.tangential_compliance = 1 / s.mass + (c + sp.radius) * (c + sp.radius) * inv_i;
-                o_s.rotational_compliance = inv_i;
-            }
-            o.spheres.push_back(o_s);
-        }
-    }
-    ++o.version;
 }
 
 int BodySolver::find(const std::string& name) const {
@@ -89,13 +47,7 @@ int BodySolver::add_body(BodyState state, BodyModel model, const std::vector<She
     bodies_.push_back(state);
     models_.push_back(std::move(model));
     loads_.emplace_back();
-    if (obstacles_) {
-        grain_force_.emplace_back();
-        grain_torque_.emplace_back();
-        obstacles_->impulse.emplace_back();
-        obstacles_->angular_impulse.emplace_back();
-        update_obstacles();
-    }
+    update_obstacles();
     if (fluid_) fluid_->add_shell(b, state, shell, rho, m_particle);
     return b;
 }
@@ -118,20 +70,7 @@ void BodySolver::compute_forces() {
     ScopedTimer timer(t_forces_);
     for (auto& l : loads_) l = {};
     if (fluid_) fluid_->add_loads(bodies_, loads_);
-    if (obstacles_) {
-        auto& o = *obstacles_;
-        if (o.time > 0)
-            for (std::size_t b = 0; b < bodies_.size(); ++b) {
-                grain_force_[b] = (1 / o.time) * o.impulse[b];
-                grain_torque_[b] = (1 / o.time) * o.angular_impulse[b];
-                o.impulse[b] = o.angular_impulse[b] = {};
-            }
-        o.time = 0;
-        for (std::size_t b = 0; b < bodies_.size(); ++b) {
-            loads_[b].contact_force += grain_force_[b];
-            loads_[b].contact_torque += grain_torque_[b];
-        }
-    }
+    if (grains_) grains_->add_loads(loads_);
     // Look ahead three steps of the current size (the first evaluation: a millisecond).
     const Real horizon = 3 * (last_dt_ > 0 ? last_dt_ : Real(1e-3));
     max_contact_rate_ =

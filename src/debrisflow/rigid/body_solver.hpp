@@ -1,8 +1,8 @@
 #pragma once
 #include "debrisflow/core/domain.hpp"
-#include "debrisflow/dem/obstacles.hpp"
 #include "debrisflow/rigid/body_contacts.hpp"
 #include "debrisflow/rigid/fluid_side.hpp"
+#include "debrisflow/rigid/grain_side.hpp"
 #include "debrisflow/rigid/joints.hpp"
 #include "debrisflow/time/phase.hpp"
 #include <memory>
@@ -38,10 +38,9 @@ public:
                JointSet joints, BodyContacts contacts, const dem::WallSet* walls);
     // Couples the bodies to a fluid (it must outlive the solver).
     void attach_fluid(FluidSide* fluid);
-    // Couples the bodies to the grains: their contact samples become DEM obstacle spheres;
-    // the grains' reaction (averaged over the DEM steps since the last collection) is added
-    // to the contact loads, so the momentum exchanged is the same on both sides.
-    void attach_grains(dem::ObstacleSet* obstacles);
+    // Couples the bodies to grains (it must outlive the solver): their contact samples become
+    // the grains' obstacle spheres, the grains' reaction a contact load.
+    void attach_grains(GrainSide* grains);
 
     const char* name() const override { return "rigid"; }
     void update_neighbors(bool reorder) override;
@@ -102,7 +101,10 @@ public:
     void state(checkpoint::Archive& ar);
 
 private:
-    void update_obstacles();
+    // The grains' obstacle spheres follow the bodies.
+    void update_obstacles() {
+        if (grains_) grains_->follow(bodies_, models_);
+    }
     // The fluid's boundary particles follow the bodies (positions too when asked).
     void move_particles(bool positions) {
         if (fluid_) fluid_->follow(bodies_, positions);
@@ -125,8 +127,7 @@ private:
     const dem::WallSet* walls_;
     std::size_t initial_bodies_ = 0; // bodies of the case; rock feeds add more
     FluidSide* fluid_ = nullptr;
-    dem::ObstacleSet* obstacles_ = nullptr;
-    std::vector<Vec3> grain_force_, grain_torque_; // last collected grain reaction
+    GrainSide* grains_ = nullptr;
     Real t_ = 0, saved_t_ = 0;
     Real elapsed_ = 0;        // time since the contact history was committed
     bool commit_next_ = true; // the next force evaluation ends a step

@@ -67,7 +67,7 @@ void BodySolver::state(checkpoint::Archive& ar) {
                &BodyState::material, &BodyState::contact_radius, &BodyState::prescribed_omega);
     if (bodies.size() != count) ar.fail("its body count does not match its models");
     bodies_ = std::move(bodies);
-    ar(loads_, grain_force_, grain_torque_, t_, saved_t_, elapsed_, commit_next_);
+    ar(loads_, t_, saved_t_, elapsed_, commit_next_);
     ar(pending_kick_, max_contact_rate_, last_dt_);
     std::vector<Vec3> impulse;
     for (const auto& j : joints_.joints()) impulse.push_back(j.impulse);
@@ -76,7 +76,7 @@ void BodySolver::state(checkpoint::Archive& ar) {
     for (std::size_t k = 0; k < impulse.size(); ++k) joints_.joints()[k].impulse = impulse[k];
     contacts_.state(ar);
     recorder_.state(ar);
-    if (ar.is_loading() && (loads_.size() != count || (obstacles_ && grain_force_.size() != count)))
+    if (ar.is_loading() && loads_.size() != count)
         ar.fail("body loads that do not match its bodies");
 }
 
