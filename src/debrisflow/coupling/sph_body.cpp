@@ -83,9 +83,7 @@ void SphBodyCoupling::add_shell(int b, const rigid::BodyState& state,
                  particles::Kind::boundary, std::int16_t(-1));
         set_.set_wall(set_.size() - 1, sp.n, sp.depth);
         rows_.extra_rows.emplace(set_.id.back(), std::uint32_t(rows_.owner.size()));
-        rows_.owner.push_back(b);
-        rows_.offset.push_back(rigid::rotate_inverse(state.q, sp.p - state.pos));
-        rows_.normal.push_back(rigid::rotate_inverse(state.q, sp.n));
+        rows_.append(b, state, sp.p, sp.n);
     }
 }
 

@@ -23,6 +23,13 @@ struct BodyParticles {
     std::vector<std::int32_t> owner;
     std::vector<Vec3> offset, normal;
     std::unordered_map<ParticleId, std::uint32_t> extra_rows; // id -> row, for added bodies
+    // A row for body b's particle at world position p with outward normal n, kept in the
+    // body's frame (state: the body's current pose).
+    void append(std::int32_t b, const rigid::BodyState& state, Vec3 p, Vec3 n) {
+        owner.push_back(b);
+        offset.push_back(rigid::rotate_inverse(state.q, p - state.pos));
+        normal.push_back(rigid::rotate_inverse(state.q, n));
+    }
     // Row of particle id, or -1 when it belongs to no body (`initial`: rows built before the run).
     long row(ParticleId id, std::size_t initial) const {
         if (id >= first_id && id < first_id + initial) return long(id - first_id);

@@ -89,14 +89,9 @@ std::unique_ptr<rigid::BodySolver> make_body_solver(const io::CaseSpec& c,
 coupling::BodyParticles body_particles(const std::vector<BuiltBody>& built, ParticleId first_id) {
     coupling::BodyParticles bp;
     bp.first_id = first_id;
-    for (std::size_t b = 0; b < built.size(); ++b) {
-        const auto& s = built[b].state;
-        for (const auto& sp : built[b].sph_points) {
-            bp.owner.push_back(std::int32_t(b));
-            bp.offset.push_back(rigid::rotate_inverse(s.q, sp.p - s.pos));
-            bp.normal.push_back(rigid::rotate_inverse(s.q, sp.n));
-        }
-    }
+    for (std::size_t b = 0; b < built.size(); ++b)
+        for (const auto& sp : built[b].sph_points)
+            bp.append(std::int32_t(b), built[b].state, sp.p, sp.n);
     return bp;
 }
 
