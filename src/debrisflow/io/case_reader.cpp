@@ -112,6 +112,7 @@ void read_sph(const ConfigTable& t, CaseSpec& c) {
     p.boundary_min_pressure = t.real("boundary_min_pressure", 0);
     if (p.boundary_min_pressure > 0) t.fail("boundary_min_pressure", "must be <= 0 [Pa]");
     p.boundary = t.choice("boundary", {"dbc", "mdbc"}, "dbc");
+    p.pair_loop = t.choice("pair_loop", {"list", "cells"}, "list");
     t.finish();
 }
 

@@ -16,7 +16,7 @@ struct CubicSpline {
         alpha = dim == 2 ? Real(10) / (7 * pi * h * h) : Real(1) / (pi * h * h * h);
     }
     DF_HD Real support() const { return 2 * h; }
-    DF_HD Real w(Real r) const {
+    DF_HD DF_HOT_INLINE Real w(Real r) const {
         const Real q = r * inv_h;
         if (q >= 2) return 0;
         if (q < 1) return alpha * (1 - Real(1.5) * q * q + Real(0.75) * q * q * q);
@@ -24,7 +24,7 @@ struct CubicSpline {
         return alpha * Real(0.25) * t * t * t;
     }
     // (dW/dr) / r
-    DF_HD Real grad_over_r(Real r) const {
+    DF_HD DF_HOT_INLINE Real grad_over_r(Real r) const {
         const Real q = r * inv_h;
         if (q >= 2 || r <= 0) return 0;
         if (q < 1) return alpha * (-3 + Real(2.25) * q) * inv_h * inv_h;

@@ -16,14 +16,14 @@ struct WendlandC2 {
         alpha = dim == 2 ? Real(7) / (4 * pi * h * h) : Real(21) / (16 * pi * h * h * h);
     }
     DF_HD Real support() const { return 2 * h; }
-    DF_HD Real w(Real r) const {
+    DF_HD DF_HOT_INLINE Real w(Real r) const {
         const Real q = r * inv_h;
         if (q >= 2) return 0;
         const Real t = 1 - Real(0.5) * q;
         return alpha * t * t * t * t * (2 * q + 1);
     }
     // (dW/dr) / r, so that grad W_ij = r_ij * grad_over_r(|r_ij|).
-    DF_HD Real grad_over_r(Real r) const {
+    DF_HD DF_HOT_INLINE Real grad_over_r(Real r) const {
         const Real q = r * inv_h;
         if (q >= 2) return 0;
         const Real t = 1 - Real(0.5) * q;

@@ -17,7 +17,7 @@ struct DensityRates {
 struct NoDiffusion {
     static constexpr const char* name = "none";
     static NoDiffusion configure(const DiffusionContext&) { return {}; }
-    DF_HD DensityRates pair(const PairState&) const { return {0, 0}; }
+    DF_HD DF_HOT_INLINE DensityRates pair(const PairState&) const { return {0, 0}; }
 };
 
 // delta-SPH density diffusion (Molteni & Colagrossi 2009; Antuono et al. 2010 eq. 6):
@@ -32,7 +32,7 @@ struct MolteniColagrossi {
         return d;
     }
 
-    DF_HD DensityRates pair(const PairState& s) const {
+    DF_HD DF_HOT_INLINE DensityRates pair(const PairState& s) const {
         // (x_j - x_i).grad_i W = -r^2 f
         const Real k = 2 * delta * h * c0 * (-s.r2 * s.f) * s.inv_r2_eta2 * (s.rho_j - s.rho_i);
         return {k * s.vol_j, -k * s.vol_i};
@@ -57,7 +57,7 @@ struct Fourtakas {
         return d;
     }
 
-    DF_HD DensityRates pair(const PairState& s) const {
+    DF_HD DF_HOT_INLINE DensityRates pair(const PairState& s) const {
         // g.(x_j - x_i) = -g.r, scaled by rho0 / B
         const Real gr = -(g_over_b[0] * s.r.x + g_over_b[1] * s.r.y + g_over_b[2] * s.r.z);
         const Real k = 2 * delta * h * c0 * (-s.r2 * s.f) * s.inv_r2_eta2;
@@ -65,7 +65,7 @@ struct Fourtakas {
                 k * (s.rho_i - s.rho_j - hydrostatic(-gr)) * s.vol_i};
     }
     // rho^H_b - rho^H_a for rho0 g.(x_b - x_a) / B = x
-    DF_HD Real hydrostatic(Real x) const {
+    DF_HD DF_HOT_INLINE Real hydrostatic(Real x) const {
         // (1 + x)^a - 1 by its Taylor series to third order: |x| <= 2 h gamma g / c0^2 << 1 for
         // a pair, so the truncation (a (a-1)(a-2)(a-3)/24 x^4) is below 1e-9 relative.
         const Real a = inv_gamma;

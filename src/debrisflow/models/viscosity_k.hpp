@@ -25,7 +25,7 @@ struct ArtificialViscosity {
         return {c.alpha, c.boundary_factor, c.h};
     }
 
-    DF_HD Vec3 acceleration(const PairState& s) const {
+    DF_HD DF_HOT_INLINE Vec3 acceleration(const PairState& s) const {
         const Real vr = dot(s.v, s.r);
         if (vr >= 0) return {};
         const Real a = s.boundary_j ? alpha * boundary_factor : alpha;
@@ -52,7 +52,7 @@ struct LaminarViscosity {
         return {c.nu, c.rho0, c.morris_eta2()};
     }
 
-    DF_HD Vec3 acceleration(const PairState& s) const {
+    DF_HD DF_HOT_INLINE Vec3 acceleration(const PairState& s) const {
         const Real mu2 = 2 * rho0 * nu;
         const Real k = mu2 * s.r2 * s.f / (s.rho_i * s.rho_j * (s.r2 + eta2));
         return k * s.v_visc;
@@ -82,7 +82,7 @@ struct LaminarSpsViscosity {
         return v;
     }
 
-    DF_HD Vec3 acceleration(const PairState& s) const {
+    DF_HD DF_HOT_INLINE Vec3 acceleration(const PairState& s) const {
         return LaminarViscosity{nu, rho0, eta2}.acceleration(s);
     }
     Real kinematic_viscosity() const { return nu; }

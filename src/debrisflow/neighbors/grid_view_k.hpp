@@ -19,7 +19,7 @@ struct GridView {
     Real inv_cell[3];
     Real radius2; // squared search radius
 
-    DF_HD int cell_coord(Real v, int d) const {
+    DF_HD DF_HOT_INLINE int cell_coord(Real v, int d) const {
         int c = int((v - lo[d]) * inv_cell[d]);
         if (c < 0) c = periodic[d] ? c % nc[d] + nc[d] : 0;
         if (c >= nc[d]) c = periodic[d] ? c % nc[d] : nc[d] - 1;
@@ -27,7 +27,7 @@ struct GridView {
     }
 
     // Separation xi - xj with periodic images folded in.
-    DF_HD Vec3 separation(Vec3 xi, Vec3 xj) const {
+    DF_HD DF_HOT_INLINE Vec3 separation(Vec3 xi, Vec3 xj) const {
         Vec3 r = xi - xj;
         for (int d = 0; d < 3; ++d) {
             if (!periodic[d]) continue;
@@ -43,8 +43,8 @@ struct GridView {
     // Calls f(j, r_ij, r2) for every particle j != self with |xi - x_j| < search radius.
     // Coordinates of particle j are px[j * stride] ... (stride 3 for arrays of 3-vectors).
     template <class F>
-    DF_HD void for_each_neighbor(Index self, Vec3 xi, const Real* px, const Real* py,
-                                 const Real* pz, F&& f, int stride = 1) const {
+    DF_HD DF_HOT_INLINE void for_each_neighbor(Index self, Vec3 xi, const Real* px, const Real* py,
+                                               const Real* pz, F&& f, int stride = 1) const {
         const Positions pos{px, py, pz, stride};
         const int c0 = cell_coord(xi.x, 0), c1 = cell_coord(xi.y, 1), c2 = cell_coord(xi.z, 2);
         const int r1 = nc[1] > 1 ? 1 : 0, r2 = nc[2] > 1 ? 1 : 0;
@@ -81,7 +81,8 @@ private:
         int stride;
     };
     template <class F>
-    DF_HD void visit_range(Index a, Index b, Index self, Vec3 xi, Positions p, F& f) const {
+    DF_HD DF_HOT_INLINE void visit_range(Index a, Index b, Index self, Vec3 xi, Positions p,
+                                         F& f) const {
         for (Index k = a; k < b; ++k) {
             const Index j = order[k];
             const std::size_t s = std::size_t(j) * std::size_t(p.stride);

@@ -45,16 +45,17 @@ template <class Kernel, class Viscosity, class Diffusion> struct PairTerms {
         Real rho, prho, c, m, vol, mu;
         bool fluid;
     };
-    DF_HD Side side(Index i) const {
+    DF_HD DF_HOT_INLINE Side side(Index i) const {
         return {pv.pos(i),  pv.vel(i), pv.rho[i], prho[i],       cs[i],
                 pv.mass[i], vol[i],    pv.mu[i],  pv.is_fluid(i)};
     }
 
-    DF_HD Result operator()(Index i, Index j, Vec3 r, Real r2) const {
+    DF_HD DF_HOT_INLINE Result operator()(Index i, Index j, Vec3 r, Real r2) const {
         return (*this)(side(i), i, side(j), j, r, r2);
     }
 
-    DF_HD Result operator()(const Side& a, Index i, const Side& b, Index j, Vec3 r, Real r2) const {
+    DF_HD DF_HOT_INLINE Result operator()(const Side& a, Index i, const Side& b, Index j, Vec3 r,
+                                          Real r2) const {
         models::PairState s;
         s.r = r;
         s.r2 = r2;
@@ -92,7 +93,8 @@ template <class Kernel, class Viscosity, class Diffusion> struct PairTerms {
     // the fluid particle's and d_B the wall particle's distance to the wall surface. d_A is
     // bounded below by dp/2 (Morris caps beta at 1.5 for particles that get closer than the
     // lattice allows; our fluid starts dp/2 from the wall, so the bound is on d_A instead).
-    DF_HD Vec3 no_slip_velocity(const Side& wall, Index b, Vec3 x_fluid, Vec3 v) const {
+    DF_HD DF_HOT_INLINE Vec3 no_slip_velocity(const Side& wall, Index b, Vec3 x_fluid,
+                                              Vec3 v) const {
         if (pv.wd[b] <= 0) return v; // no wall geometry: plain DBC
         const Vec3 n{pv.wnx[b], pv.wny[b], pv.wnz[b]};
         const Real d_fluid = dot(x_fluid - wall.x, n) - pv.wd[b];
@@ -101,7 +103,7 @@ template <class Kernel, class Viscosity, class Diffusion> struct PairTerms {
     }
 
     // (tau_i + tau_j) . g
-    DF_HD Vec3 tau_dot(Index i, Index j, Vec3 g) const {
+    DF_HD DF_HOT_INLINE Vec3 tau_dot(Index i, Index j, Vec3 g) const {
         const Real* a = tau + 6 * i;
         const Real* b = tau + 6 * j;
         const Real xx = a[0] + b[0], xy = a[1] + b[1], xz = a[2] + b[2];

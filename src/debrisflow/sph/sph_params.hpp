@@ -31,6 +31,12 @@ struct SphParams {
     // Boundary particles' density: "dbc" (continuity, Crespo et al. 2007) or "mdbc" (mirrored
     // from the fluid at a ghost node, English et al. 2022; particles with wall geometry).
     std::string boundary = "dbc";
+    // How the force evaluation visits pairs: "list" (half pair list with a Verlet skin,
+    // scattered to both particles; the host's way) or "cells" (each particle gathers its
+    // neighbours from the cell grid, every pair evaluated from both sides; the GPU's way,
+    // run on the host to check it).
+    std::string pair_loop = "list";
+    bool gathers() const { return pair_loop == "cells"; }
 };
 
 // Volume a particle of the lattice stands for, dp^dim (2D: per metre of thickness); a

@@ -32,7 +32,9 @@ SphSolver::SphSolver(const SphParams& params, particles::ParticleSet& set, const
     // The pair list holds pairs up to support + skin and is rebuilt once a particle has moved
     // skin/2; 10 % of the support keeps the list ~1.3x the true pairs in 3D.
     skin_ = Real(0.1) * support_;
-    grid_.configure(domain.lo, domain.hi, support_ + skin_, params.dim, domain.periodic);
+    // The gather loop reads a grid rebuilt every step: cells of the support, no skin.
+    const Real cell = params.gathers() ? support_ : support_ + skin_;
+    grid_.configure(domain.lo, domain.hi, cell, params.dim, domain.periodic);
 }
 
 Real SphSolver::max_displacement() const {
@@ -56,7 +58,9 @@ void SphSolver::update_neighbors(bool allow_reorder) {
         set_.permute(grid_.order());
         grid_.build(set_.x.data(), set_.y.data(), set_.z.data(), set_.size());
     }
-    list_.build(grid_.view(), set_.view());
+    // The gather loop reads the cell grid, rebuilt above every step; it keeps the reference
+    // positions only to sort the particles by cell as often as the list would be rebuilt.
+    if (!params_.gathers()) list_.build(grid_.view(), set_.view());
     xref_ = set_.x;
     yref_ = set_.y;
     zref_ = set_.z;
@@ -150,6 +154,10 @@ Real SphSolver::max_kinematic_viscosity() const {
 }
 
 void SphSolver::compute_forces() {
+    if (params_.gathers()) {
+        compute_forces_gather();
+        return;
+    }
     ScopedTimer timer(t_forces_);
     auto pv = set_.view();
     const auto gv = grid_.view();
@@ -206,6 +214,7 @@ void SphSolver::compute_forces() {
 }
 
 void SphSolver::compute_forces_gather() {
+    ScopedTimer timer(t_forces_);
     with_gather([&](const auto& body) { exec::for_each(set_.size(), body); });
 }
 
