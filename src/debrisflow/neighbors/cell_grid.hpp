@@ -1,4 +1,5 @@
 #pragma once
+#include "debrisflow/core/bytes_of.hpp"
 #include "debrisflow/neighbors/grid_view_k.hpp"
 #include <array>
 #include <vector>
@@ -16,6 +17,8 @@ public:
     GridView view() const;
     const std::vector<Index>& order() const { return order_; }
     int cell_count() const { return nc_[0] * nc_[1] * nc_[2]; }
+    // Bytes allocated for the cells and the sorted order.
+    std::size_t bytes() const { return bytes_of(start_, order_, cell_of_, count_); }
 
 private:
     std::array<int, 3> nc_{1, 1, 1};

@@ -1,4 +1,5 @@
 #pragma once
+#include "debrisflow/core/bytes_of.hpp"
 #include "debrisflow/neighbors/grid_view_k.hpp"
 #include "debrisflow/particles/particle_set.hpp"
 #include <cstdint>
@@ -34,6 +35,8 @@ public:
     // boundary particles are in no pair, and loops skip them).
     const std::vector<Index>& touched() const { return touched_; }
     const std::uint8_t* touched_mask() const { return mask_.data(); }
+    // Bytes allocated for the list.
+    std::size_t bytes() const { return bytes_of(count_, j_, rows_, touched_, mask_); }
 
 private:
     void index_touched(Index n);

@@ -1,5 +1,6 @@
 #include "debrisflow/particles/particle_set.hpp"
 #include "debrisflow/checkpoint/archive.hpp"
+#include "debrisflow/core/bytes_of.hpp"
 #include "debrisflow/exec/parallel.hpp"
 
 namespace debrisflow::particles {
@@ -92,6 +93,11 @@ void ParticleSet::set_wall(Index i, Vec3 normal, Real depth) {
     wny[i] = normal.y;
     wnz[i] = normal.z;
     wd[i] = depth;
+}
+
+std::size_t ParticleSet::bytes() const {
+    return bytes_of(x, y, z, vx, vy, vz, ax, ay, az, rho, drho, p, mass, wnx, wny, wnz, wd, mu,
+                    vx_old, vy_old, vz_old, rho_old, sps_tau, kind, group, id);
 }
 
 ParticleView ParticleSet::view() {

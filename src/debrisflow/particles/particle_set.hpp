@@ -61,6 +61,8 @@ public:
     void compact(const std::vector<std::uint8_t>& keep);
 
     ParticleView view();
+    // Bytes allocated for every array.
+    std::size_t bytes() const;
     // Saves or restores every array and the next id (checkpoint/archive.hpp).
     void state(checkpoint::Archive& ar);
     // Changes whenever particles are added, reordered or removed (indices become stale).

@@ -47,6 +47,9 @@ public:
     long list_builds() const { return list_builds_; }
     const neighbors::PairList& pair_list() const { return list_; }
     Real support() const { return support_; }
+    // Bytes the SPH phase holds allocated: the particle arrays, the cell grid, the pair list
+    // and its scatter buffers, and the solver's own per-particle arrays.
+    std::size_t memory_bytes() const;
     // Force evaluation by the gather loop over the cell grid (the GPU layout); the scatter
     // loop over the half pair list (compute_forces) must give the same result.
     void compute_forces_gather();
