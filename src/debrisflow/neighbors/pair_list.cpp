@@ -9,14 +9,18 @@ namespace debrisflow::neighbors {
 void PairList::build(const GridView& grid, const particles::ParticleView& pv) {
     const Index n = pv.n;
     count_.assign(std::size_t(n), 0);
+    row_of_.resize(std::size_t(n));
+    Index rows = 0;
+    for (Index i = 0; i < n; ++i) row_of_[std::size_t(i)] = pv.is_fluid(i) ? rows++ : -1;
     for (;;) {
-        j_.resize(std::size_t(n) * capacity_);
+        j_.resize(std::size_t(rows) * capacity_);
         const Index cap = Index(capacity_);
         Index* jj = j_.data();
         Index* cnt = count_.data();
+        const Index* row_of = row_of_.data();
         const auto row = [&](Index i) {
             Index c = 0;
-            Index* out = jj + std::size_t(i) * cap;
+            Index* out = jj + std::size_t(row_of[i] < 0 ? 0 : row_of[i]) * cap;
             if (pv.is_fluid(i))
                 grid.for_each_neighbor(i, pv.pos(i), pv.x, pv.y, pv.z, [&](Index j, Vec3, Real) {
                     if (j < i && pv.is_fluid(j)) return;
@@ -43,13 +47,18 @@ void PairList::compact(const std::vector<std::uint8_t>& keep) {
     // already been moved, and within a row the write index never passes the read index. Only
     // the non-empty rows are touched (a flume's boundary rows are empty). Order is kept, so a
     // fluid-fluid pair stays in the row of its lower index.
-    std::vector<Index> count(std::size_t(m), 0);
+    // A kept particle with a row keeps one, at its rank among them (<= its old row).
+    std::vector<Index> count(std::size_t(m), 0), row_of(std::size_t(m), -1);
+    Index rows = 0;
+    for (Index i = 0; i < n; ++i)
+        if (to[std::size_t(i)] >= 0 && row_of_[std::size_t(i)] >= 0)
+            row_of[std::size_t(to[std::size_t(i)])] = rows++;
     const std::size_t cap = capacity_;
     for (const Index i : rows_) {
         const Index r = to[std::size_t(i)];
         if (r < 0) continue;
-        const Index* row = j_.data() + std::size_t(i) * cap;
-        Index* out = j_.data() + std::size_t(r) * cap;
+        const Index* row = j_.data() + begin(i);
+        Index* out = j_.data() + std::size_t(row_of[std::size_t(r)]) * cap;
         Index c = 0;
         for (Index k = 0; k < count_[std::size_t(i)]; ++k) {
             const Index j = to[std::size_t(row[k])];
@@ -58,7 +67,8 @@ void PairList::compact(const std::vector<std::uint8_t>& keep) {
         count[std::size_t(r)] = c;
     }
     count_.swap(count);
-    j_.resize(std::size_t(m) * cap);
+    row_of_.swap(row_of);
+    j_.resize(std::size_t(rows) * cap);
     index_touched(m);
 }
 
@@ -67,6 +77,7 @@ void PairList::index_touched(Index n) {
     std::uint8_t* mask = mask_.data();
     const Index* jj = j_.data();
     const Index* cnt = count_.data();
+    const Index* row_of = row_of_.data();
     const std::size_t cap = capacity_;
     // Several rows can mark the same j: relaxed atomic stores of the same value.
     exec::for_each(
@@ -74,7 +85,7 @@ void PairList::index_touched(Index n) {
         [=](Index i) {
             if (cnt[i] == 0) return;
             std::atomic_ref<std::uint8_t>(mask[i]).store(1, std::memory_order_relaxed);
-            const Index* row = jj + std::size_t(i) * cap;
+            const Index* row = jj + std::size_t(row_of[i]) * cap;
             for (Index k = 0; k < cnt[i]; ++k)
                 std::atomic_ref<std::uint8_t>(mask[row[k]]).store(1, std::memory_order_relaxed);
         },

@@ -12,8 +12,8 @@ namespace debrisflow::neighbors {
 // skin/2 (Verlet 1967). Fluid-fluid pairs are stored in the row of the lower index, fluid-
 // boundary pairs in the fluid particle's row, boundary-boundary pairs are left out: boundary
 // rows are empty and only fluid particles are searched around, so a model made mostly of
-// boundary particles (a long flume, rock shells) costs what its fluid costs. Fixed capacity
-// per particle, grown when a particle overflows it.
+// boundary particles (a long flume, rock shells) costs what its fluid costs. Only fluid
+// particles have a row in memory, of a fixed capacity grown when a row overflows it.
 class PairList {
 public:
     // Builds the list; `radius` includes the skin.
@@ -22,7 +22,8 @@ public:
     // ParticleSet::compact): the same list a build at the same positions would give, without
     // the search. An outlet removing a few particles a step no longer forces a rebuild.
     void compact(const std::vector<std::uint8_t>& keep);
-    Index begin(Index i) const { return Index(i * capacity_); }
+    // Start of particle i's row in neighbors(); only for particles with a row (count(i) > 0).
+    std::size_t begin(Index i) const { return std::size_t(row_of_[i]) * capacity_; }
     Index count(Index i) const { return count_[i]; }
     const Index* neighbors() const { return j_.data(); }
     std::size_t pairs() const;
@@ -36,13 +37,14 @@ public:
     const std::vector<Index>& touched() const { return touched_; }
     const std::uint8_t* touched_mask() const { return mask_.data(); }
     // Bytes allocated for the list.
-    std::size_t bytes() const { return bytes_of(count_, j_, rows_, touched_, mask_); }
+    std::size_t bytes() const { return bytes_of(count_, row_of_, j_, rows_, touched_, mask_); }
 
 private:
     void index_touched(Index n);
 
     std::size_t capacity_ = 64;
     std::vector<Index> count_, j_;
+    std::vector<Index> row_of_; // particle -> its row in j_ (fluid), -1 (boundary: no row)
     std::vector<Index> rows_, touched_;
     std::vector<std::uint8_t> mask_;
 };
