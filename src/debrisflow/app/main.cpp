@@ -41,9 +41,10 @@ int check(const std::string& file, const std::vector<std::string>& sets) {
     if (sim.has_fluid()) {
         const auto d = sim.solver().initial_dt();
         std::cout << fmt::format("sph: dp = {} m, kernel {}, h = {:.4g} m, c0 = {:.4g} m/s, "
-                                 "walls {}; initial dt {:.4g} s ({})\n",
+                                 "walls {}, pairs {}; initial dt {:.4g} s ({})\n",
                                  spec.dp, spec.sph.kernel, spec.sph.h, spec.sph.c0,
-                                 spec.sph.boundary, d.dt, d.limiter);
+                                 spec.sph.boundary, sph::pair_loop_words(spec.sph), d.dt,
+                                 d.limiter);
     }
     if (sim.has_grains()) {
         const auto& d = sim.grains();

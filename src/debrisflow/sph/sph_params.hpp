@@ -39,6 +39,12 @@ struct SphParams {
     bool gathers() const { return pair_loop == "cells"; }
 };
 
+// How `check` and the log name the pair loop; every phase runs on the host (OpenMP) so far.
+inline const char* pair_loop_words(const SphParams& p) {
+    return p.gathers() ? "gathered over cells (the GPU's loop, run on the host)"
+                       : "from a half list (host)";
+}
+
 // Volume a particle of the lattice stands for, dp^dim (2D: per metre of thickness); a
 // particle's mass is a density times it.
 inline Real lattice_volume(Real dp, int dim) {
