@@ -326,7 +326,6 @@ RunReport Simulation::run(const RunOptions& opt) {
             report.pair_list_builds = solver_->list_builds();
             report.pairs = solver_->pair_list().pairs();
             report.sph_bytes = solver_->memory_bytes();
-            report.sph_pair_loop = solver_->params().pair_loop;
             report.sph_particles = set_.size();
         }
         if (rigid_) report.body_contacts = rigid_->contacts();

@@ -57,11 +57,11 @@ void write_summary(const std::string& path, const io::CaseSpec& spec, const RunR
     o << "  \"pair_list_builds\": " << r.pair_list_builds << ",\n";
     o << "  \"pair_list_entries\": " << r.pairs << ",\n";
     if (r.sph_bytes > 0) {
-        const long sph_particles = r.sph_particles;
-        o << fmt::format("  \"sph_memory\": {{\"pair_loop\": {}, \"bytes\": {}, "
-                         "\"bytes_per_particle\": {}}},\n",
-                         quoted(r.sph_pair_loop), r.sph_bytes,
-                         num(sph_particles > 0 ? double(r.sph_bytes) / double(sph_particles) : 0));
+        o << fmt::format(
+            "  \"sph_memory\": {{\"pair_loop\": {}, \"bytes\": {}, "
+            "\"bytes_per_particle\": {}}},\n",
+            quoted(spec.sph.pair_loop), r.sph_bytes,
+            num(r.sph_particles > 0 ? double(r.sph_bytes) / double(r.sph_particles) : 0));
     }
     if (r.grains > 0)
         o << fmt::format("  \"dem\": {{\"dt\": {}, \"dt_limiter\": {}, \"contacts\": {}, "

@@ -25,7 +25,6 @@ struct RunReport {
     double particle_steps = 0; // sum over steps of the particles present (fluid, walls, grains)
     std::size_t pairs = 0;     // half pair list entries at the end (pairs within support + skin)
     std::size_t sph_bytes = 0; // memory the SPH phase holds at the end (SphSolver::memory_bytes)
-    std::string sph_pair_loop; // "list" or "cells"
     long sph_particles = 0;    // fluid and boundary particles at the end
     // FEM solids: nodes, elements, eroded elements, critical step and FEM steps taken.
     long fem_nodes = 0, fem_elements = 0, fem_eroded = 0, fem_substeps = 0;

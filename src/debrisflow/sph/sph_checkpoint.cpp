@@ -16,6 +16,7 @@ void SphSolver::state(checkpoint::Archive& ar) {
         list_valid_ = false; // built before particles were added: the next step rebuilds it
         return;
     }
+    if (params_.gathers()) return; // the gather loop has no list; its grid is built every step
     // The list as the saved run built it: the same particle order at the same positions.
     grid_.build(xref_.data(), yref_.data(), zref_.data(), set_.size());
     auto at_build = set_.view();
