@@ -48,25 +48,31 @@ void CellGrid::configure(Vec3 lo, Vec3 hi, Real radius, int dim, std::array<bool
     start_.assign(std::size_t(cell_count()) + 1, 0);
 }
 
-void CellGrid::build(const Real* x, const Real* y, const Real* z, Index n, int stride) {
+void CellGrid::build(const Real* x, const Real* y, const Real* z, Index n, int stride,
+                     const std::uint8_t* cls) {
     cell_of_.resize(n);
     order_.resize(n);
     const GridView g = view_;
     const int n0 = nc_[0], n1 = nc_[1];
+    const int classes = cls ? 2 : 1;
     Index* cell_of = cell_of_.data();
     exec::for_each(n, [=](Index i) {
         const std::size_t k = std::size_t(i) * std::size_t(stride);
-        cell_of[i] =
+        const Index c =
             g.cell_coord(x[k], 0) + n0 * (g.cell_coord(y[k], 1) + n1 * g.cell_coord(z[k], 2));
+        cell_of[i] = cls ? 2 * c + (cls[i] != 0) : c;
     });
-    const int nc = cell_count();
-    count_.assign(std::size_t(nc) + 1, 0);
+    // Counting sort on the key (cell, or cell and class): stable, so a cell lists its
+    // particles in index order.
+    const int nk = cell_count() * classes;
+    count_.assign(std::size_t(nk) + 1, 0);
     for (Index i = 0; i < n; ++i) ++count_[cell_of_[i] + 1];
-    for (int c = 0; c < nc; ++c) count_[c + 1] += count_[c];
+    for (int c = 0; c < nk; ++c) count_[c + 1] += count_[c];
     start_.assign(count_.begin(), count_.end());
     for (Index i = 0; i < n; ++i) order_[count_[cell_of_[i]]++] = i;
     view_.start = start_.data();
     view_.order = order_.data();
+    view_.classes = classes;
 }
 
 GridView CellGrid::view() const {

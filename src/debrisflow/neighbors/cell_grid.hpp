@@ -2,6 +2,7 @@
 #include "debrisflow/core/bytes_of.hpp"
 #include "debrisflow/neighbors/grid_view_k.hpp"
 #include <array>
+#include <cstdint>
 #include <vector>
 
 namespace debrisflow::neighbors {
@@ -13,7 +14,10 @@ public:
     void configure(Vec3 lo, Vec3 hi, Real radius, int dim, std::array<bool, 3> periodic);
     // Sorts particles into cells; afterwards order() lists particle indices cell by cell.
     // Coordinates of particle i are x[i * stride] ... (stride 3 for arrays of 3-vectors).
-    void build(const Real* x, const Real* y, const Real* z, Index n, int stride = 1);
+    // With a class array (0 or 1 per particle, e.g. fluid and boundary) each cell lists its
+    // class-0 particles first and the view can visit them alone (GridView::classes).
+    void build(const Real* x, const Real* y, const Real* z, Index n, int stride = 1,
+               const std::uint8_t* cls = nullptr);
     GridView view() const;
     const std::vector<Index>& order() const { return order_; }
     int cell_count() const { return nc_[0] * nc_[1] * nc_[2]; }

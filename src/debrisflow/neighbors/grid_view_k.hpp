@@ -9,9 +9,14 @@ namespace debrisflow::neighbors {
 // Trivially copyable view of a cell grid built by counting sort. Particles of cell c are
 // order[start[c]] .. order[start[c+1]-1]; cells are numbered x fastest, so a run of cells
 // along x is one contiguous range. Periodic directions use the minimum-image convention.
+// A grid sorted in two classes (fluid 0, boundary 1: CellGrid::build with a class array) keeps
+// each cell's class-0 particles first: cell c is order[start[2c]] .. order[start[2c+2]-1], its
+// class 0 ends at start[2c+1], so a loop that needs only the fluid skips the walls' particles
+// without testing them.
 struct GridView {
-    const Index* start; // size ncells + 1
+    const Index* start; // size ncells * classes + 1
     const Index* order; // sorted position -> particle index
+    int classes = 1;    // 1, or 2 (each cell split into its class-0 and class-1 particles)
     int nc[3];
     int periodic[3];
     Real lo[3];
@@ -45,9 +50,29 @@ struct GridView {
     template <class F>
     DF_HD DF_HOT_INLINE void for_each_neighbor(Index self, Vec3 xi, const Real* px, const Real* py,
                                                const Real* pz, F&& f, int stride = 1) const {
-        const Positions pos{px, py, pz, stride};
+        visit_stencil(self, xi, {px, py, pz, stride}, f, false);
+    }
+
+    // The same over class-0 (fluid) particles only where the grid is sorted in two classes;
+    // over every particle otherwise (the caller still tells the classes apart).
+    template <class F>
+    DF_HD DF_HOT_INLINE void for_each_class0_neighbor(Index self, Vec3 xi, const Real* px,
+                                                      const Real* py, const Real* pz, F&& f) const {
+        visit_stencil(self, xi, {px, py, pz, 1}, f, classes == 2);
+    }
+
+private:
+    struct Positions {
+        const Real *x, *y, *z;
+        int stride;
+    };
+    // Cells of the 3 x 3 (x 3) stencil around xi; class 0 of each cell only with `first`.
+    template <class F>
+    DF_HD DF_HOT_INLINE void visit_stencil(Index self, Vec3 xi, Positions pos, F& f,
+                                           bool first) const {
         const int c0 = cell_coord(xi.x, 0), c1 = cell_coord(xi.y, 1), c2 = cell_coord(xi.z, 2);
         const int r1 = nc[1] > 1 ? 1 : 0, r2 = nc[2] > 1 ? 1 : 0;
+        const int k = classes;
         for (int dz = -r2; dz <= r2; ++dz) {
             int cz = c2 + dz;
             if (cz < 0 || cz >= nc[2]) {
@@ -61,25 +86,24 @@ struct GridView {
                     cy = (cy + nc[1]) % nc[1];
                 }
                 const int row = nc[0] * (cy + nc[1] * cz);
-                if (!periodic[0]) {
+                if (!periodic[0] && !first) {
                     const int xa = c0 > 0 ? c0 - 1 : 0;
                     const int xb = c0 + 1 < nc[0] ? c0 + 1 : nc[0] - 1;
-                    visit_range(start[row + xa], start[row + xb + 1], self, xi, pos, f);
+                    visit_range(start[k * (row + xa)], start[k * (row + xb + 1)], self, xi, pos, f);
                 } else {
                     for (int dx = -1; dx <= 1; ++dx) {
-                        const int cx = (c0 + dx + nc[0]) % nc[0];
-                        visit_range(start[row + cx], start[row + cx + 1], self, xi, pos, f);
+                        int cx = c0 + dx;
+                        if (cx < 0 || cx >= nc[0]) {
+                            if (!periodic[0]) continue;
+                            cx = (cx + nc[0]) % nc[0];
+                        }
+                        const int c = k * (row + cx);
+                        visit_range(start[c], start[first ? c + 1 : c + k], self, xi, pos, f);
                     }
                 }
             }
         }
     }
-
-private:
-    struct Positions {
-        const Real *x, *y, *z;
-        int stride;
-    };
     template <class F>
     DF_HD DF_HOT_INLINE void visit_range(Index a, Index b, Index self, Vec3 xi, Positions p,
                                          F& f) const {

@@ -147,19 +147,25 @@ template <class Kernel, class Viscosity, class Diffusion> struct FluidInteractio
 
     DF_HD void operator()(Index i) const {
         const auto& pv = terms.pv;
-        const bool fluid_i = pv.is_fluid(i);
-        const Vec3 vi = pv.vel(i);
+        const auto a = terms.side(i);
+        const bool fluid_i = a.fluid;
         Vec3 acc{};
         Real drho = 0;
         Real strain[6] = {0, 0, 0, 0, 0, 0};
-        grid.for_each_neighbor(i, pv.pos(i), pv.x, pv.y, pv.z, [&](Index j, Vec3 r, Real r2) {
-            if (!fluid_i && !pv.is_fluid(j)) return;
-            const auto t = terms(i, j, r, r2);
-            acc += pv.mass[j] * t.g;
-            drho += pv.mass[j] * t.cont + t.d.i;
+        const auto pair = [&](Index j, Vec3 r, Real r2) {
+            const auto b = terms.side(j);
+            if (!fluid_i && !b.fluid) return;
+            const auto t = terms(a, i, b, j, r, r2);
+            acc += b.m * t.g;
+            drho += b.m * t.cont + t.d.i;
             if constexpr (Viscosity::needs_velocity_gradient)
-                if (fluid_i) add_symmetric_gradient(strain, terms.vol[j], pv.vel(j) - vi, t.grad_w);
-        });
+                if (fluid_i) add_symmetric_gradient(strain, b.vol, b.v - a.v, t.grad_w);
+        };
+        // A wall particle takes drho and the fluid's push from fluid partners only.
+        if (fluid_i)
+            grid.for_each_neighbor(i, a.x, pv.x, pv.y, pv.z, pair);
+        else
+            grid.for_each_class0_neighbor(i, a.x, pv.x, pv.y, pv.z, pair);
         if (fluid_i) acc += gravity;
         pv.ax[i] = acc.x;
         pv.ay[i] = acc.y;

@@ -42,7 +42,7 @@ template <class Kernel> struct MdbcDensity {
         // (0: rho_g, 1..3: h grad rho_g). Lengths are in units of h.
         Real a[4][4] = {}, rhs[4] = {};
         const Real inv_h = 1 / h;
-        grid.for_each_neighbor(-1, xg, pv.x, pv.y, pv.z, [&](Index j, Vec3 r, Real r2) {
+        grid.for_each_class0_neighbor(-1, xg, pv.x, pv.y, pv.z, [&](Index j, Vec3 r, Real r2) {
             if (!pv.is_fluid(j)) return;
             const Real dist = std::sqrt(r2);
             const Real w = kernel.w(dist);

@@ -48,15 +48,22 @@ Real SphSolver::max_displacement() const {
     });
 }
 
+void SphSolver::build_grid() {
+    // The gather loop's grid lists each cell's fluid before its walls (GridView::classes), so
+    // that a wall particle's row visits only fluid partners: boundary-boundary pairs add nothing.
+    const std::uint8_t* cls = params_.gathers() ? set_.kind.data() : nullptr;
+    grid_.build(set_.x.data(), set_.y.data(), set_.z.data(), set_.size(), 1, cls);
+}
+
 void SphSolver::update_neighbors(bool allow_reorder) {
     ScopedTimer timer(t_neighbors_);
-    grid_.build(set_.x.data(), set_.y.data(), set_.z.data(), set_.size());
+    build_grid();
     const bool stale = !list_valid_ || xref_.size() != std::size_t(set_.size()) ||
                        4 * max_displacement() > skin_ * skin_;
     if (!stale) return;
     if (allow_reorder && params_.reorder_every > 0) {
         set_.permute(grid_.order());
-        grid_.build(set_.x.data(), set_.y.data(), set_.z.data(), set_.size());
+        build_grid();
     }
     // The gather loop reads the cell grid, rebuilt above every step; it keeps the reference
     // positions only to sort the particles by cell as often as the list would be rebuilt.

@@ -66,6 +66,8 @@ public:
     void state(checkpoint::Archive& ar);
 
 private:
+    // Sorts the particles into the cell grid (fluid before walls in each cell for the gather).
+    void build_grid();
     void update_pressure();
     // mDBC: every boundary particle with wall geometry takes the density mirrored from the
     // fluid at its ghost node (MdbcDensity); run before the pressures of a force evaluation.
