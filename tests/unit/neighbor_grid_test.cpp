@@ -57,7 +57,9 @@ void compare_with_brute_force(int dim, std::array<bool, 3> periodic, bool two_cl
     EXPECT_EQ(found, expected);
     // one class: every partner; two: the class-0 partners only
     EXPECT_EQ(found0, expected0);
-    if (two_classes) EXPECT_LT(expected0.size(), expected.size());
+    if (two_classes) {
+        EXPECT_LT(expected0.size(), expected.size());
+    }
     EXPECT_GT(expected.size(), std::size_t(n));
 }
 

@@ -197,6 +197,9 @@ RunReport Simulation::run(const RunOptions& opt) {
     integ.set_scheme(spec_.scheme == "verlet" || !solver_ ? time::Scheme::verlet
                                                           : time::Scheme::symplectic,
                      spec_.verlet_euler_every);
+    // The symplectic scheme keeps its own copy of the state at t_n; the Verlet scheme's
+    // state at t_(n-1) is not needed.
+    if (solver_ && spec_.scheme != "verlet") set_.drop_previous_state();
     if (resume_.active) integ.resume(resume_.step, resume_.first_dt);
     resume_.active = false;
     for (std::size_t w = 0; w < spec_.walls.size(); ++w) {

@@ -51,6 +51,7 @@ void FluidInlet::apply(particles::ParticleSet& set, Real t, Real dt) {
     const bool flat = dim_ == 2;
     const Real sign = Real(spec_.sign);
     Real* vs[3] = {set.vx.data(), set.vy.data(), set.vz.data()};
+    const bool old_state = set.keeps_previous_state(); // Verlet only
     Real* vo[3] = {set.vx_old.data(), set.vy_old.data(), set.vz_old.data()};
     exec::for_each(n, [&](Index i) {
         if (set.kind[i] != std::uint8_t(particles::Kind::fluid)) return;
@@ -59,8 +60,12 @@ void FluidInlet::apply(particles::ParticleSet& set, Real t, Real dt) {
         for (int k = 0; k < 3; ++k)
             if (!(flat && k == 1)) inside = inside && x[k] >= lo[k] && x[k] <= hi[k];
         if (!inside) return;
-        for (int k = 0; k < 3; ++k) vs[k][i] = vo[k][i] = k == a ? sign * u : 0;
-        set.rho[i] = set.rho_old[i] = density_at(x[2]);
+        for (int k = 0; k < 3; ++k) {
+            vs[k][i] = k == a ? sign * u : 0;
+            if (old_state) vo[k][i] = vs[k][i];
+        }
+        set.rho[i] = density_at(x[2]);
+        if (old_state) set.rho_old[i] = set.rho[i];
     });
     // New layers behind the upstream one: it started at dp/2 inside the upstream face.
     advance_ += u * dt;

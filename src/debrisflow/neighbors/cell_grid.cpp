@@ -75,6 +75,12 @@ void CellGrid::build(const Real* x, const Real* y, const Real* z, Index n, int s
     view_.classes = classes;
 }
 
+bool CellGrid::in_order() const {
+    for (std::size_t k = 0; k < order_.size(); ++k)
+        if (order_[k] != Index(k)) return false;
+    return true;
+}
+
 GridView CellGrid::view() const {
     return view_;
 }

@@ -20,6 +20,8 @@ public:
                const std::uint8_t* cls = nullptr);
     GridView view() const;
     const std::vector<Index>& order() const { return order_; }
+    // Whether the particles already lie in cell order (order() is the identity).
+    bool in_order() const;
     int cell_count() const { return nc_[0] * nc_[1] * nc_[2]; }
     // Bytes allocated for the cells and the sorted order.
     std::size_t bytes() const { return bytes_of(start_, order_, cell_of_, count_); }

@@ -44,10 +44,12 @@ void ParticleSet::add(Vec3 pos, Vec3 vel, Real density, Real m, Kind k, std::int
     wnz.push_back(0);
     wd.push_back(0);
     mu.push_back(0);
-    vx_old.push_back(vel.x);
-    vy_old.push_back(vel.y);
-    vz_old.push_back(vel.z);
-    rho_old.push_back(density);
+    if (previous_state_) {
+        vx_old.push_back(vel.x);
+        vy_old.push_back(vel.y);
+        vz_old.push_back(vel.z);
+        rho_old.push_back(density);
+    }
     if (!sps_tau.empty()) sps_tau.resize(sps_tau.size() + sps_width, Real(0));
     kind.push_back(std::uint8_t(k));
     group.push_back(grp);
@@ -59,6 +61,7 @@ void ParticleSet::permute(const std::vector<Index>& perm) {
     ++layout_version_;
     for_each_field(*this, [&](auto& field) {
         using V = std::decay_t<decltype(field)>;
+        if (field.empty()) return; // the Verlet state of a symplectic run
         V out(field.size());
         const Index n = Index(perm.size());
         exec::for_each(n, [&](Index i) { out[i] = field[perm[i]]; });
@@ -116,7 +119,16 @@ void ParticleSet::state(checkpoint::Archive& ar) {
         if (a->size() != n) ar.fail("particle arrays of different lengths");
     if (kind.size() != n || group.size() != n || id.size() != n)
         ar.fail("particle arrays of different lengths");
-    if (ar.is_loading()) ++layout_version_;
+    if (!ar.is_loading()) return;
+    ++layout_version_;
+    previous_state_ = !(vx_old.empty() && n > 0);
+    for (const auto* a : {&vx_old, &vy_old, &vz_old, &rho_old})
+        if (a->size() != (previous_state_ ? n : 0)) ar.fail("particle arrays of different lengths");
+}
+
+void ParticleSet::drop_previous_state() {
+    previous_state_ = false;
+    for (auto* a : {&vx_old, &vy_old, &vz_old, &rho_old}) std::vector<Real>().swap(*a);
 }
 
 } // namespace debrisflow::particles

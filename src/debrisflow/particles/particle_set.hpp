@@ -38,7 +38,8 @@ public:
     std::vector<Real> x, y, z, vx, vy, vz, ax, ay, az, rho, drho, p, mass;
     std::vector<Real> wnx, wny, wnz, wd; // zero for fluid particles
     std::vector<Real> mu; // apparent dynamic viscosity [Pa s]; 0 for artificial viscosity
-    std::vector<Real> vx_old, vy_old, vz_old, rho_old; // state at t_(n-1), Verlet scheme only
+    // State at t_(n-1), Verlet scheme only: empty after drop_previous_state().
+    std::vector<Real> vx_old, vy_old, vz_old, rho_old;
     // SPS stress / rho^2 from the last force evaluation (Laminar+SPS only), 6 per particle
     // (xx, xy, xz, yy, yz, zz); zero for new particles. Empty (no memory) until the solver
     // of a Laminar+SPS case sizes it.
@@ -60,6 +61,11 @@ public:
     // Removes every particle for which keep[i] == 0 (order of the rest is preserved).
     void compact(const std::vector<std::uint8_t>& keep);
 
+    // Frees the Verlet scheme's state at t_(n-1) and stops keeping it (a symplectic run: 32 B
+    // per particle less).
+    void drop_previous_state();
+    bool keeps_previous_state() const { return previous_state_; }
+
     ParticleView view();
     // Bytes allocated for every array.
     std::size_t bytes() const;
@@ -70,6 +76,7 @@ public:
 
 private:
     std::uint64_t layout_version_ = 0;
+    bool previous_state_ = true;
     ParticleId next_id_ = 0;
 };
 

@@ -22,13 +22,16 @@ template <class Kernel, class Viscosity, class Diffusion> struct PairTerms {
     Kernel kernel;
     Viscosity visc;
     Diffusion diff;
-    const Real* prho; // p / rho^2 per particle
-    const Real* cs;   // sound speed per particle
-    const Real* vol;  // m / rho per particle
-    const Real* tau;  // SPS stress / rho^2, 6 per particle (xx, xy, xz, yy, yz, zz), or nullptr:
-                      // the stress of the previous force evaluation (see sps_tau below)
-    Real half_dp;     // dp / 2: smallest fluid-wall distance used in the no-slip extrapolation
-    Real eta2;        // 0.01 h^2, regulariser of 1 / r^2 (Monaghan 1992)
+    // p / rho^2, sound speed and m / rho per particle, or nullptr: then each is computed from
+    // rho, p and m where a side is loaded (the gather path, which keeps no copies of them).
+    const Real* prho;
+    const Real* cs;
+    const Real* vol;
+    const Real* tau; // SPS stress / rho^2, 6 per particle (xx, xy, xz, yy, yz, zz), or nullptr:
+                     // the stress of the previous force evaluation (see sps_tau below)
+    Real half_dp;    // dp / 2: smallest fluid-wall distance used in the no-slip extrapolation
+    Real eta2;       // 0.01 h^2, regulariser of 1 / r^2 (Monaghan 1992)
+    models::TaitEos eos{}; // the sound speed where cs is nullptr
 
     // a_i += m_j g, a_j -= m_i g; drho_i += m_j cont + d.i, drho_j += m_i cont + d.j;
     // grad_w = grad_i W_ij (the velocity gradient of the SPS stress sums over it).
@@ -46,8 +49,12 @@ template <class Kernel, class Viscosity, class Diffusion> struct PairTerms {
         bool fluid;
     };
     DF_HD DF_HOT_INLINE Side side(Index i) const {
-        return {pv.pos(i),  pv.vel(i), pv.rho[i], prho[i],       cs[i],
-                pv.mass[i], vol[i],    pv.mu[i],  pv.is_fluid(i)};
+        const Real rho = pv.rho[i], m = pv.mass[i];
+        if (prho)
+            return {pv.pos(i), pv.vel(i), rho, prho[i], cs[i], m, vol[i], pv.mu[i], pv.is_fluid(i)};
+        // the same expressions as SphSolver::update_pressure, so the same numbers
+        return {pv.pos(i), pv.vel(i), rho,      pv.p[i] / (rho * rho), eos.sound_speed(rho),
+                m,         m / rho,   pv.mu[i], pv.is_fluid(i)};
     }
 
     DF_HD DF_HOT_INLINE Result operator()(Index i, Index j, Vec3 r, Real r2) const {

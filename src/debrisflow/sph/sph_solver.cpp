@@ -58,6 +58,16 @@ void SphSolver::build_grid() {
 void SphSolver::update_neighbors(bool allow_reorder) {
     ScopedTimer timer(t_neighbors_);
     build_grid();
+    if (params_.gathers()) {
+        // The gather reads the grid built above, every step. As a device does, it sorts the
+        // particles by cell whenever the step allows, so it keeps no reference positions.
+        if (allow_reorder && params_.reorder_every > 0 && !grid_.in_order()) {
+            set_.permute(grid_.order());
+            build_grid();
+            ++list_builds_;
+        }
+        return;
+    }
     const bool stale = !list_valid_ || xref_.size() != std::size_t(set_.size()) ||
                        4 * max_displacement() > skin_ * skin_;
     if (!stale) return;
@@ -65,9 +75,7 @@ void SphSolver::update_neighbors(bool allow_reorder) {
         set_.permute(grid_.order());
         build_grid();
     }
-    // The gather loop reads the cell grid, rebuilt above every step; it keeps the reference
-    // positions only to sort the particles by cell as often as the list would be rebuilt.
-    if (!params_.gathers()) list_.build(grid_.view(), set_.view());
+    list_.build(grid_.view(), set_.view());
     xref_ = set_.x;
     yref_ = set_.y;
     zref_ = set_.z;
@@ -82,13 +90,18 @@ SphSolver::SpsConstants SphSolver::sps_constants() const {
     return {v->smagorinsky * v->smagorinsky * dp2, Real(2) / 3 * v->blin * dp2};
 }
 
-void SphSolver::update_pressure() {
+void SphSolver::update_pressure(bool arrays) {
     auto pv = set_.view();
+    const auto eos = eos_;
+    if (!arrays) { // the gather computes p / rho^2, c and m / rho where it needs them
+        for (auto* v : {&prho_, &cs_, &vol_}) std::vector<Real>().swap(*v);
+        exec::for_each(pv.n, [=](Index i) { pv.p[i] = eos.pressure(pv.rho[i]); });
+        return;
+    }
     prho_.resize(std::size_t(pv.n));
     cs_.resize(std::size_t(pv.n));
     vol_.resize(std::size_t(pv.n));
     Real *prho = prho_.data(), *cs = cs_.data(), *vol = vol_.data();
-    const auto eos = eos_;
     exec::for_each(pv.n, [=](Index i) {
         const Real p = eos.pressure(pv.rho[i]);
         pv.p[i] = p;

@@ -43,7 +43,8 @@ public:
     void remove_group(std::int16_t group);
     // Removes the particles with keep[i] == 0 (an outlet).
     void remove_particles(const std::vector<std::uint8_t>& keep);
-    // Pair-list statistics: builds so far, pairs in the list, kernel support.
+    // Pair-list statistics: builds so far (the gather loop: sorts by cell), pairs in the list,
+    // kernel support.
     long list_builds() const { return list_builds_; }
     const neighbors::PairList& pair_list() const { return list_; }
     Real support() const { return support_; }
@@ -68,7 +69,9 @@ public:
 private:
     // Sorts the particles into the cell grid (fluid before walls in each cell for the gather).
     void build_grid();
-    void update_pressure();
+    // Pressures; with `arrays` also p / rho^2, sound speed and volume per particle (the half
+    // list's pair loop reads them; the gather computes them where it loads a particle).
+    void update_pressure(bool arrays);
     // mDBC: every boundary particle with wall geometry takes the density mirrored from the
     // fluid at its ghost node (MdbcDensity); run before the pressures of a force evaluation.
     void update_boundary_density();

@@ -9,7 +9,7 @@ namespace debrisflow::sph {
 
 template <class F> void SphSolver::with_pair_terms(F&& f, bool pairs) {
     if (params_.boundary == "mdbc") update_boundary_density();
-    update_pressure();
+    update_pressure(pairs);
     update_viscosity(pairs);
     const bool sps = std::holds_alternative<models::LaminarSpsViscosity>(models_.viscosity);
     if (sps && set_.sps_tau.size() != 6 * std::size_t(set_.size()))
@@ -20,9 +20,13 @@ template <class F> void SphSolver::with_pair_terms(F&& f, bool pairs) {
             using K = std::decay_t<decltype(kernel)>;
             using V = std::decay_t<decltype(visc)>;
             using D = std::decay_t<decltype(diff)>;
-            f(PairTerms<K, V, D>{pv, kernel, visc, diff, prho_.data(), cs_.data(), vol_.data(),
+            // The half list reads p / rho^2, c and m / rho from arrays; the gather computes
+            // them where it loads a particle (no arrays: less memory, as on a device).
+            const bool arrays = pairs;
+            f(PairTerms<K, V, D>{pv, kernel, visc, diff, arrays ? prho_.data() : nullptr,
+                                 arrays ? cs_.data() : nullptr, arrays ? vol_.data() : nullptr,
                                  sps ? set_.sps_tau.data() : nullptr, Real(0.5) * params_.dp,
-                                 Real(0.01) * params_.h * params_.h});
+                                 Real(0.01) * params_.h * params_.h, eos_});
         },
         models_.kernel, models_.viscosity, models_.diffusion);
 }
