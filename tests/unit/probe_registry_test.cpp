@@ -49,7 +49,7 @@ TEST(ProbeRegistry, NamesAreUniqueAndEachMakesItsProbe) {
         EXPECT_TRUE(seen.insert(std::string(type.name)).second) << type.name;
         EXPECT_NE(type.from_config, nullptr) << type.name;
     }
-    EXPECT_EQ(seen.size(), 21u);
+    EXPECT_EQ(seen.size(), 22u);
     // two fluid probes made through the registry, with the keys they read
     const auto spec = test::case_from_toml(
         "probe_registry",

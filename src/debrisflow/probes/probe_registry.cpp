@@ -6,6 +6,7 @@
 #include "debrisflow/probes/flow_probes.hpp"
 #include "debrisflow/probes/hazard_map.hpp"
 #include "debrisflow/probes/pressure_map.hpp"
+#include "debrisflow/probes/runout_probe.hpp"
 #include "debrisflow/probes/sph_probes.hpp"
 #include "debrisflow/probes/wall_force_probe.hpp"
 #include <algorithm>
@@ -29,6 +30,7 @@ constexpr std::array types = {
     type_of<MassFluxProbe>(),    type_of<DischargeProbe>(),     type_of<TrappingProbe>(),
     type_of<DepositProbe>(),     type_of<BodyProbe>(),          type_of<FemDisplacementProbe>(),
     type_of<FemForceProbe>(),    type_of<FemFaceLoadProbe>(),   type_of<DomainExitProbe>(),
+    type_of<RunoutProbe>(),
 };
 } // namespace
 

@@ -1,0 +1,113 @@
+#!/usr/bin/env python3
+"""Column-collapse deposits at several aspect ratios, for each deposit model.
+
+Runs cases/deposits/column_collapse2d.toml (discs, no rolling resistance or EPSD) and
+column_collapse2d_clumps.toml (two-disc clumps) with the gate moved so that the settled
+column has the aspect ratio asked for, then reads the `runout` probe: the column's width L0
+and height H0 at t = 0 (the deposit's front and height), the run-out of the linked deposit
+dL = front - L0 and its final height H at the end, and prints a Markdown table with the
+published scalings beside it:
+  quasi-2D channels, 3D beads (Lube et al. 2005; Lajeunesse et al. 2005):
+      dL/L0 = 1.2 a (a < 1.8), 1.9 a^(2/3) (a > 2.8)
+  true 2D, aluminium rods (Nguyen, Bui & Fukagawa 2015, arXiv:1512.05180):
+      dL/L0 = 3.25 a^0.96 (0.65 <= a <= 1.5), 3.80 a^0.73 (a >= 1.5); H0/H = 1.42 a^(2/3)
+      (a >= 0.65), H = H0 below.
+
+usage: column_collapse_study.py BUILD/debrisflow OUTDIR [--threads N] [--aspects 0.5,1,2,4]
+"""
+import argparse
+import csv
+import math
+import os
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+CASES = os.path.join(HERE, "..", "..", "cases", "deposits")
+
+# grains per column: 800 discs (or 800 clumps of the same area-equivalent sizes)
+COUNT = 800
+# settled solid fraction of the disc columns (measured: 0.77-0.78), to place the gate
+PHI = 0.78
+D50 = 0.005
+
+MODELS = {
+    "discs, no rolling resistance": ("column_collapse2d.toml", ['dem.rolling="none"']),
+    "discs, EPSD mu_r = 0.1": ("column_collapse2d.toml", ["material.0.rolling_friction=0.1"]),
+    "discs, EPSD mu_r = 0.2": ("column_collapse2d.toml", []),
+    "two-disc clumps, no rolling resistance": ("column_collapse2d_clumps.toml", []),
+}
+
+
+def lube(a):
+    if a < 1.8:
+        return 1.2 * a
+    if a > 2.8:
+        return 1.9 * a ** (2 / 3)
+    return None
+
+
+def nguyen(a):
+    if a < 0.65:
+        return None
+    return 3.25 * a**0.96 if a <= 1.5 else 3.80 * a**0.73
+
+
+def nguyen_height(a):
+    return 1.0 if a < 0.65 else 1 / (1.42 * a ** (2 / 3))
+
+
+def run(exe, case, sets, out, threads):
+    cmd = [exe, "run", os.path.join(CASES, case), "--out", out, "--threads", str(threads)]
+    for s in sets:
+        cmd += ["--set", s]
+    r = subprocess.run(cmd, capture_output=True, text=True)
+    if r.returncode != 0:
+        sys.exit(f"{' '.join(cmd)} failed:\n{r.stdout[-2000:]}{r.stderr[-2000:]}")
+    with open(os.path.join(out, "probes", "runout.csv")) as f:
+        rows = [list(map(float, row)) for row in list(csv.reader(f))[1:]]
+    return rows
+
+
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("exe")
+    p.add_argument("out")
+    p.add_argument("--threads", type=int, default=2)
+    p.add_argument("--aspects", default="0.5,1,2,4")
+    p.add_argument("--end", type=float, default=3.0)
+    args = p.parse_args()
+    aspects = [float(a) for a in args.aspects.split(",")]
+    area = COUNT * math.pi * D50**2 / 4 / PHI  # column area after settling
+    print("| grains | a = H0/L0 | L0 (m) | dL/L0 linked | at t - 1 s | dL/L0 95 % mass | "
+          "H/H0 | detached | quasi-2D 1.2a / 1.9a^(2/3) | true 2D rods | rods H/H0 |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    for name, (case, sets) in MODELS.items():
+        for a in aspects:
+            L0 = math.sqrt(area / a)
+            # room to insert the grains at random before settling (clumps by their bounding circles)
+            box = (5.0 if "clumps" in case else 2.6) * area / L0
+            s = sets + [
+                f"wall.2.point=[{L0:.5f},0,0]",
+                f"grains.0.count={COUNT}",
+                f"grains.0.region.max=[{L0:.5f},0,{box:.4f}]",
+                f"domain.max=[1.6,0,{box + 0.05:.4f}]",
+                f"time.end={args.end}",
+                "output.vtk_every=0.5",
+            ]
+            out = os.path.join(args.out, f"{case[:-5]}_{'_'.join(name.split()[1:3])}_a{a:g}")
+            rows = run(args.exe, case, s, out, args.threads)
+            L, H = rows[0][1], rows[0][4]
+            last = rows[-1]
+            before = min(rows, key=lambda r: abs(r[0] - (last[0] - 1)))
+            aa = H / L
+            ref_l, ref_n = lube(aa), nguyen(aa)
+            fmt = lambda v: "—" if v is None else f"{v:.2f}"
+            print(f"| {name} | {aa:.2f} | {L:.3f} | {(last[1] - L) / L:.2f} | "
+                  f"{(before[1] - L) / L:.2f} | {(last[2] - L) / L:.2f} | {last[4] / H:.2f} | "
+                  f"{int(last[5])} | {fmt(ref_l)} | {fmt(ref_n)} | {nguyen_height(aa):.2f} |",
+                  flush=True)
+
+
+if __name__ == "__main__":
+    main()
