@@ -58,7 +58,8 @@ def nguyen_height(a):
 
 
 def run(exe, case, sets, out, threads):
-    cmd = [exe, "run", os.path.join(CASES, case), "--out", out, "--threads", str(threads)]
+    cmd = [exe, "run", os.path.join(CASES, case), "--out", out, "--overwrite"]
+    cmd += ["--threads", str(threads)]
     for s in sets:
         cmd += ["--set", s]
     r = subprocess.run(cmd, capture_output=True, text=True)
@@ -76,6 +77,7 @@ def main():
     p.add_argument("--threads", type=int, default=2)
     p.add_argument("--aspects", default="0.5,1,2,4")
     p.add_argument("--end", type=float, default=3.0)
+    p.add_argument("--only", default="", help="run the models whose name contains this")
     args = p.parse_args()
     aspects = [float(a) for a in args.aspects.split(",")]
     area = COUNT * math.pi * D50**2 / 4 / PHI  # column area after settling
@@ -83,6 +85,8 @@ def main():
           "H/H0 | detached | quasi-2D 1.2a / 1.9a^(2/3) | true 2D rods | rods H/H0 |")
     print("|---|---|---|---|---|---|---|---|---|---|---|")
     for name, (case, sets) in MODELS.items():
+        if args.only not in name:
+            continue
         for a in aspects:
             L0 = math.sqrt(area / a)
             # room to insert the grains at random before settling (clumps by their bounding circles)
@@ -95,7 +99,8 @@ def main():
                 f"time.end={args.end}",
                 "output.vtk_every=0.5",
             ]
-            out = os.path.join(args.out, f"{case[:-5]}_{'_'.join(name.split()[1:3])}_a{a:g}")
+            slug = "".join(c if c.isalnum() else "_" for c in name)
+            out = os.path.join(args.out, f"{slug}_a{a:g}")
             rows = run(args.exe, case, s, out, args.threads)
             L, H = rows[0][1], rows[0][4]
             last = rows[-1]
