@@ -17,43 +17,56 @@ struct Collapse {
     Real aspect, height_ratio, runout;
 };
 
-// 800 discs of 4-6 mm behind a gate at x = 0.1 m (about twice as high as wide once settled).
-Collapse collapse_of_discs() {
+// 800 discs of 4-6 mm behind a gate at x = 0.1 m (about twice as high as wide once settled),
+// one random packing per seed, released at t = 0 and followed to `end`.
+Collapse collapse_of_discs(int seed, Real end) {
     const std::string file = DEBRISFLOW_SOURCE_DIR "/cases/deposits/column_collapse2d.toml";
     app::Simulation sim(
         io::read_case(file, {"dem.rolling=\"none\"", "wall.2.point=[0.1,0,0]", "grains.0.count=800",
+                             "grains.0.seed=" + std::to_string(seed),
                              "grains.0.region.max=[0.1,0,0.52]", "domain.max=[1.6,0,0.57]",
-                             "time.end=2.5", "probe.2.every=0.05"}));
+                             "time.end=" + std::to_string(end), "probe.2.every=0.05"}));
     app::RunOptions opt;
     opt.quiet = true;
     sim.run(opt);
     const auto& h = sim.probe("runout").history(); // {t, front, front_95, front_max, height, ..}
     const Real L0 = h.front()[1], H0 = h.front()[4];
     const Real L = h.back()[1], H = h.back()[4];
-    std::printf("a = %.3f: L0 %.4f m, H0 %.4f m; front %.4f m, height %.4f m, detached %g\n",
-                H0 / L0, L0, H0, L, H, h.back()[5]);
-    return {H0 / L0, H / H0, (L - L0) / L0};
+    const Real a = H0 / L0;
+    std::printf("seed %d: a = %.3f (L0 %.4f m, H0 %.4f m); at %.2f s H/H0 %.3f against %.3f, "
+                "dL/L0 %.2f against %.2f (rods)\n",
+                seed, a, L0, H0, end, H / H0, 1 / (1.42 * std::pow(a, Real(2) / 3)), (L - L0) / L0,
+                3.80 * std::pow(a, 0.73));
+    return {a, H / H0, (L - L0) / L0};
 }
+
+constexpr int realisations = 5; // packings (seeds 1-5): one deposit varies by a few per cent
 } // namespace
 
-// The deposit's final height: Nguyen et al. (2015) fit, tolerance 10 % (the abstract gives the
-// fit, not its scatter; 10 % is our bound for a deposit shape against an empirical fit).
-// Measured: H/H0 0.406 against 0.430 at a = 2.10 (and -4 to -12 % at a = 0.57-4.1 in
-// tools/deposits/column_collapse_study.py, docs/validation.md).
+// The deposit's final height, the mean over five packings of (H/H0) / fit: Nguyen et al. (2015)
+// fit, tolerance 10 % (the abstract gives the fit, not its scatter; 10 % is our bound for a
+// deposit shape against an empirical fit). The height is at rest from about 0.75 s on, so the
+// runs stop at 1 s. Measured: 0.927 (-7.3 %; the packings 0.87-0.96), a = 2.09-2.15.
 TEST(DemColumnCollapse, DiscsFinalHeightFollowsTrue2DRods) {
-    const Collapse c = collapse_of_discs();
-    ASSERT_GT(c.aspect, 1.5); // the fit's regime
-    const Real expected = 1 / (1.42 * std::pow(c.aspect, Real(2) / 3));
-    std::printf("H/H0 %.3f against %.3f (rods); run-out dL/L0 %.2f against %.2f (rods)\n",
-                c.height_ratio, expected, c.runout, 3.80 * std::pow(c.aspect, 0.73));
-    EXPECT_NEAR(c.height_ratio / expected, 1, 0.10);
+    Real sum = 0;
+    for (int seed = 1; seed <= realisations; ++seed) {
+        const Collapse c = collapse_of_discs(seed, 1.0);
+        ASSERT_GT(c.aspect, 1.5); // the fit's regime
+        sum += c.height_ratio * 1.42 * std::pow(c.aspect, Real(2) / 3);
+    }
+    std::printf("mean (H/H0) / fit: %.3f\n", sum / realisations);
+    EXPECT_NEAR(sum / realisations, 1, 0.10);
 }
 
-// The run-out of the same collapse: Nguyen et al. (2015) fit, tolerance 15 %. Not reached:
-// the discs' linked deposit reaches dL/L0 4.66 against the rods' 6.53 (-29 %; -41 % in a 3 s
-// study run); see docs/validation.md ("Deposit shape").
+// The run-out of the same collapses at 2.5 s, the mean of dL/L0 / fit over the five packings:
+// Nguyen et al. (2015) fit, tolerance 15 %. Not reached: 4.4-5.2 against 6.5-6.7 (about
+// -30 %); see docs/validation.md ("Deposit shape").
 TEST(DemColumnCollapseKnownGap, DiscsRunOutFollowsTrue2DRods) {
-    const Collapse c = collapse_of_discs();
-    ASSERT_GT(c.aspect, 1.5);
-    EXPECT_NEAR(c.runout / (3.80 * std::pow(c.aspect, 0.73)), 1, 0.15);
+    Real sum = 0;
+    for (int seed = 1; seed <= realisations; ++seed) {
+        const Collapse c = collapse_of_discs(seed, 2.5);
+        ASSERT_GT(c.aspect, 1.5);
+        sum += c.runout / (3.80 * std::pow(c.aspect, 0.73));
+    }
+    EXPECT_NEAR(sum / realisations, 1, 0.15);
 }

@@ -87,13 +87,13 @@ namespace {
 
 // The automatic DEM step of one grain of inertia factor `beta` (I = beta m r^2) on a plane,
 // linear law with kt = ratio * kn.
-time::DtLimit linear_step(Real beta, Real ratio) {
+time::DtLimit linear_step(Real beta, Real ratio, Real restitution = 0.5) {
     dem::Material m;
     m.name = "glass";
     m.density = 2500;
     m.kn = 1e5;
     m.kt = ratio * m.kn;
-    m.restitution = 0.5;
+    m.restitution = restitution;
     DemRig rig;
     const Real r = 0.005, mass = DemRig::sphere_mass(m.density, r);
     rig.grains.add({0, 0, r}, {}, r, mass, beta * mass * r * r, 0);
@@ -131,6 +131,28 @@ TEST(DemLaws, StableStepCoversTheTangentialRotationalMode) {
                 1, 1e-12)
         << normal.limiter;
     EXPECT_NE(normal.limiter.find("linear contact time"), std::string::npos) << normal.limiter;
+}
+
+// The dashpots' explicit bound: a dashpot of damping ratio zeta on a mode of frequency w is
+// stable for dt < 1 / (zeta w) per contact, and gets the springs' margin, dt <= safety x t_c /
+// (2 zeta), t_c = pi / w undamped. With e = 0.1 (zeta 0.591) and k_t = k_n, a sphere's
+// tangential dashpot on the contact point's mass m*/3.5 has zeta sqrt(3.5) at sqrt(3.5) w_n:
+// dt = 0.1 pi / (7 zeta w_n). With e = 0.01 (zeta 0.826) and k_t = k_n / 100 the normal dashpot
+// limits: dt = 0.1 pi / (2 zeta w_n). Closed forms, 1e-12.
+TEST(DemLaws, StableStepCoversTheDashpots) {
+    const Real pi = 3.14159265358979323846, kn = 1e5;
+    const Real mass = DemRig::sphere_mass(2500, 0.005), wn = std::sqrt(kn / (mass / 2));
+    const auto tangential = linear_step(0.4, 1, 0.1);
+    const Real z1 = dem::linear_damping_ratio(0.1);
+    EXPECT_NEAR(tangential.dt / (0.1 * pi / (7 * z1 * wn)), 1, 1e-12) << tangential.limiter;
+    EXPECT_NE(tangential.limiter.find("tangential-rotational dashpot"), std::string::npos)
+        << tangential.limiter;
+    const auto normal = linear_step(0.4, 0.01, 0.01);
+    const Real z2 = dem::linear_damping_ratio(0.01);
+    EXPECT_NEAR(normal.dt / (0.1 * pi / (2 * z2 * wn)), 1, 1e-12) << normal.limiter;
+    EXPECT_NE(normal.limiter.find("normal dashpot"), std::string::npos) << normal.limiter;
+    // e = 0.5 (zeta 0.215): the springs limit, as before
+    EXPECT_EQ(linear_step(0.4, 1).limiter.find("dashpot"), std::string::npos);
 }
 
 // A free rigid body's contact sphere takes a second grain's place in the stable step, with the

@@ -12,7 +12,7 @@ using namespace debrisflow;
 
 namespace {
 
-std::string packing_case(int dim, int count, bool dimers) {
+std::string packing_case(int dim, int count, bool dimers, double restitution) {
     const bool plane = dim == 2;
     std::string s = "name = \"settle_" + std::to_string(dim) +
                     "d\"\ndimensions = " + std::to_string(dim) + "\n";
@@ -36,9 +36,10 @@ name = "glass"
 density = 2500
 kn = 1e5
 kt = 1e5
-restitution = 0.5
 friction = 0.5
-
+)";
+    s += "restitution = " + std::to_string(restitution) + "\n";
+    s += R"(
 [[wall]]
 name = "floor"
 shape = "plane"
@@ -73,19 +74,23 @@ TEST(DemSettle, DiscsAndSpheresWithStiffTangentialSpringsReachTheEquilibriumRati
     struct Packing {
         int dim, count;
         bool dimers;
+        double restitution;
     };
-    for (const auto& [dim, count, dimers] :
-         {Packing{2, 500, false}, Packing{3, 500, false}, Packing{2, 250, true}}) {
-        app::Simulation sim(test::case_from_toml("settle", packing_case(dim, count, dimers)));
+    // e = 0.1: its tangential dashpot (zeta 1.02 for discs) limits the step; at the spring-only
+    // step the discs kept spinning and stalled at a ratio of 0.12 (dem/critical_dt.cpp)
+    for (const auto& [dim, count, dimers, e] :
+         {Packing{2, 500, false, 0.5}, Packing{3, 500, false, 0.5}, Packing{2, 250, true, 0.5},
+          Packing{2, 500, false, 0.1}, Packing{3, 500, false, 0.1}}) {
+        app::Simulation sim(test::case_from_toml("settle", packing_case(dim, count, dimers, e)));
         sim.grains().measure_contact_force(true); // for the ratio after the run
         app::RunOptions opt;
         opt.quiet = true;
         ASSERT_NO_THROW(sim.run(opt)) << dim << "D";
         const Real ratio = sim.grains().unbalanced_ratio();
-        std::printf("%dD, %d %s: dt %.3g s (%s); unbalanced ratio after settling %.4f\n", dim,
-                    count, dimers ? "two-disc clumps" : "grains", sim.grains().dt(),
+        std::printf("%dD, %d %s, e = %g: dt %.3g s (%s); unbalanced ratio after settling %.4f\n",
+                    dim, count, dimers ? "two-disc clumps" : "grains", e, sim.grains().dt(),
                     sim.grains().automatic_dt().limiter.c_str(), ratio);
-        EXPECT_LT(ratio, 0.01) << dim << "D";
+        EXPECT_LT(ratio, 0.01) << dim << "D, e = " << e;
         EXPECT_NE(sim.grains().automatic_dt().limiter.find("tangential-rotational"),
                   std::string::npos);
     }

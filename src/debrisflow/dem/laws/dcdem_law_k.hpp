@@ -59,6 +59,12 @@ struct DcdemLaw {
     }
     // k_t = 2/7 (4/3) E* sqrt(R* d): 4/21 of the normal tangent 2 E* sqrt(R* d).
     static Real tangential_ratio(const PairParams&) { return Real(4) / 21; }
+    // g_n = C_n sqrt(6 m* E* sqrt(R*)) d^(1/4) against the tangent 2 E* sqrt(R* d): C_n sqrt(3)/2;
+    // g_t = 2/7 g_n against k_t = 4/21 of that tangent: (2/7) / sqrt(4/21) of it
+    static DampingRatios damping_ratios(const PairParams& p) {
+        const Real z = p.damping * Real(0.86602540378443864676);
+        return {z, z * Real(2) / 7 / std::sqrt(Real(4) / 21)};
+    }
 };
 
 } // namespace debrisflow::dem

@@ -101,6 +101,12 @@ struct HertzMindlinJkrLaw {
     static Real contact_time(const PairParams& p, Real m_eff, Real r_eff, Real v) {
         return hertz_contact_time(p, m_eff, r_eff, v);
     }
+    // Tsuji as in hertz_mindlin: g_n = alpha sqrt(m* 4/3 E* a) against the tangent 2 E* a, and
+    // g_t = alpha sqrt(2/3 k_t m*): both alpha sqrt(2/3) / 2
+    static DampingRatios damping_ratios(const PairParams& p) {
+        const Real z = p.damping * Real(0.40824829046386301636);
+        return {z, z};
+    }
     // Mindlin k_t = 8 G* a against the Hertz tangent 2 E* a.
     static Real tangential_ratio(const PairParams& p) {
         return p.e_star > 0 ? 4 * p.g_star / p.e_star : 0;

@@ -40,6 +40,12 @@ struct HertzMindlinLaw {
     static Real contact_time(const PairParams& p, Real m_eff, Real r_eff, Real v) {
         return hertz_contact_time(p, m_eff, r_eff, v);
     }
+    // Tsuji: g_n = alpha sqrt(m* k_h sqrt(d)) against the tangent 1.5 k_h sqrt(d), and
+    // g_t = alpha sqrt(2/3 k_t m*): both alpha sqrt(2/3) / 2
+    static DampingRatios damping_ratios(const PairParams& p) {
+        const Real z = p.damping * Real(0.40824829046386301636);
+        return {z, z};
+    }
     // Mindlin k_t = 8 G* sqrt(R* d) against the normal tangent 2 E* sqrt(R* d).
     static Real tangential_ratio(const PairParams& p) {
         return p.e_star > 0 ? 4 * p.g_star / p.e_star : 0;

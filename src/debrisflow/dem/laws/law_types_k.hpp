@@ -24,4 +24,11 @@ struct ContactInput {
 // or elastic moduli E, nu (from which E* and G* of a pair follow).
 enum class Stiffness { springs, moduli };
 
+// Damping ratios of a law's dashpots against its tangent stiffnesses, on the normal effective
+// mass m*: zeta = g / (2 sqrt(k m*)) of the normal and of the tangential dashpot (for the
+// explicit step's dashpot limit, dem/critical_dt.cpp).
+struct DampingRatios {
+    Real normal, tangential;
+};
+
 } // namespace debrisflow::dem

@@ -38,6 +38,8 @@ struct LinearLaw {
     }
     // k_t against the normal stiffness (frequency ratio of the tangential mode, squared).
     static Real tangential_ratio(const PairParams& p) { return p.kt / p.kn; }
+    // g_n = 2 zeta sqrt(k_n m*), g_t = 2 zeta sqrt(k_t m*)
+    static DampingRatios damping_ratios(const PairParams& p) { return {p.damping, p.damping}; }
 };
 
 } // namespace debrisflow::dem
