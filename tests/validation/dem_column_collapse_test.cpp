@@ -59,8 +59,8 @@ TEST(DemColumnCollapse, DiscsFinalHeightFollowsTrue2DRods) {
 }
 
 // The run-out of the same collapses at 2.5 s, the mean of dL/L0 / fit over the five packings:
-// Nguyen et al. (2015) fit, tolerance 15 %. Not reached: 4.4-5.2 against 6.5-6.7 (about
-// -30 %); see docs/validation.md ("Deposit shape").
+// Nguyen et al. (2015) fit, tolerance 15 %. Not reached: 4.4-5.2 against 6.5-6.7 (mean
+// -28.5 %); see docs/validation.md ("Deposit shape").
 TEST(DemColumnCollapseKnownGap, DiscsRunOutFollowsTrue2DRods) {
     Real sum = 0;
     for (int seed = 1; seed <= realisations; ++seed) {
