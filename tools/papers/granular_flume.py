@@ -1,6 +1,7 @@
 """Section E of ../shared/reference/seed_experiments.md: mono-disperse granular flow down a flume
 at 10 and 30 degrees, free (section at 1.0-1.1 m) and against a rigid barrier at 1.2 m.
-Runs are named E_<free|barrier><slope>_<2d|3d>_d<mm> (tools/papers/run_reduced.sh)."""
+Runs are named E_<free|barrier><slope>_<2d|3d>_d<mm>, with the suffix _rr for the 2D discs with
+rolling resistance (tools/papers/run_reduced.sh flume flume_rr)."""
 import glob
 import math
 import os
@@ -28,16 +29,29 @@ PAPER_RATIO = {(10, 3): 4, (10, 10): 5, (10, 23): 10, (10, 38): 14,
 BULK = {3: 1620, 10: 1611, 23: 1583, 38: 1510}  # initial bulk density [kg/m3]
 RHO_S = 2550.0
 SMOOTH = 0.02  # s, running mean for the load-cell-like peak
-NAME = re.compile(r"E_(free|barrier)(\d+)_(2d|3d)_d(\d+)$")
+NAME = re.compile(r"E_(free|barrier)(\d+)_(2d|3d)_d(\d+)(_rr)?$")
+BARRIER_X = 1.2  # m downstream of the gate
 
 
-def runs(root):
+def runs(root, rolling=False):
+    """(free|barrier, slope, dim, d, path) of the runs of one grain model: round grains, or
+    (rolling=True) the _rr runs with rolling resistance."""
     out = []
     for path in sorted(glob.glob(os.path.join(root, "E_*"))):
         m = NAME.search(path)
-        if m and os.path.exists(os.path.join(path, "case.toml")):
+        if m and bool(m.group(5)) == rolling and os.path.exists(os.path.join(path, "case.toml")):
             out.append((m.group(1), int(m.group(2)), m.group(3), int(m.group(4)), path))
     return out
+
+
+def deposit(run):
+    """The deposit behind the barrier at the end of the run (runout probe along -x): its length
+    from the barrier to its upstream end, its height, the mass outside it."""
+    r = read_probe(run, "deposit")
+    if not r:
+        return None
+    return dict(length=BARRIER_X - column(r, "front ")[-1], height=column(r, "height")[-1],
+                detached=column(r, "detached_mass")[-1])
 
 
 def surge(run, slope, d):
@@ -71,6 +85,50 @@ def barrier(run):
     smooth = running_mean(t, f, SMOOTH)
     return dict(t=t, f=f, peak=f[k], t_peak=t[k], static=tail.mean(), end=t[-1],
                 smooth=smooth, peak_smooth=smooth.max())
+
+
+def deposit_text(run):
+    dep = deposit(run)
+    return "–" if dep is None else f"{dep['length']:.3f} / {dep['height']:.3f}"
+
+
+def rolling_table(root):
+    """Round discs against discs with rolling resistance (2D), test by test, where both ran."""
+    rr = {(k, s, d): run for k, s, dim, d, run in runs(root, rolling=True) if dim == "2d"}
+    plain = {(k, s, d): run for k, s, dim, d, run in runs(root) if dim == "2d"}
+    rows = []
+    for key in sorted(set(rr) & set(plain), key=lambda k: (k[0] != "free", k[1], k[2])):
+        kind, slope, d = key
+        for label, run in (("round discs", plain[key]), ("EPSD μ_r = 0.2", rr[key])):
+            n, m = grain_mass(run)
+            wsin = m * 9.81 * math.sin(math.radians(slope))
+            row = [f"{'F' if kind == 'free' else 'B'}{slope}-{d}", label,
+                   f"{wall_seconds(run):.0f} s", status(run)]
+            if kind == "free":
+                p, sv = PAPER_FREE.get((slope, d)), surge(run, slope, d)
+                row += ["–"] * 2 if sv is None else [
+                    f"{sv['v']:.2f} ({pct(sv['v'], p[0])})",
+                    f"{sv.get('h_dense', float('nan')):.3f} ({pct(sv.get('h_dense'), p[1])})"]
+                row += ["–"] * 3
+            else:
+                b, ref = barrier(run), PAPER_RATIO.get((slope, d))
+                if b is None or b["static"] <= 0:
+                    row += ["–"] * 5
+                else:  # free-flow columns empty
+                    ratio = b["peak"] / b["static"]
+                    row += ["–", "–", f"{b['peak']:.0f} / {b['static']:.1f} ({b['static'] / wsin:.2f} W sinθ)",
+                            f"{ratio:.1f} ({ref}, {pct(ratio, ref)})", deposit_text(run)]
+            rows.append(row)
+    if not rows:
+        return []
+    lines = ["Round discs against discs with rolling resistance (EPSD μ_r = 0.2 grain–grain and "
+             "grain–flume, calibrated on glass-bead column collapses), same build and sitting; "
+             "free flow: surge speed and dense depth at the section (paper's error); barrier: "
+             "peak (1 ms) / static load, peak / static (paper's ratio, error), the deposit at the "
+             "end:", ""]
+    lines += table(["test", "grains", "wall", "status", "v [m/s]", "h dense [m]",
+                    "peak / static [N]", "peak / static", "deposit length / height [m]"], rows)
+    return lines + [""]
 
 
 def report(root, figures):
@@ -110,7 +168,7 @@ def report(root, figures):
         n, m = grain_mass(run)
         ref = PAPER_RATIO.get((slope, d))
         if b is None:
-            rows.append([f"B{slope}-{d}", dim, f"{n} / {m:.1f} kg", status(run), "–", "–", "–", "–", ref])
+            rows.append([f"B{slope}-{d}", dim, f"{n} / {m:.1f} kg", status(run)] + ["–"] * 5 + [ref])
             continue
         ratio = b["peak"] / b["static"] if b["static"] > 0 else float("nan")
         wsin = m * 9.81 * math.sin(math.radians(slope))
@@ -118,13 +176,15 @@ def report(root, figures):
                      f"{wall_seconds(run):.0f} s ({b['end']:.2f} s)",
                      f"{b['peak']:.1f} at {b['t_peak']:.3f} s", f"{b['static']:.1f} ({b['static'] / wsin:.2f} W sinθ)",
                      f"{ratio:.1f}", f"{b['peak_smooth'] / b['static']:.1f}" if b["static"] > 0 else "–",
-                     f"{ref} ({pct(ratio, ref)})"])
+                     deposit_text(run), f"{ref} ({pct(ratio, ref)})"])
         curves[(dim, slope, d)] = b
     lines += ["Barrier load, impulse average over 1 ms (`Fn_avg`); static = mean of the last "
               "10 % of the run; W sinθ = the released weight along the slope:", ""]
     lines += table(["test", "dim", "grains / mass", "wall (simulated)", "peak [N]", "static [N]",
-                    "peak / static", "20 ms mean peak / static", "paper"], rows)
+                    "peak / static", "20 ms mean peak / static", "deposit length / height [m]",
+                    "paper"], rows)
     lines.append("")
+    lines += rolling_table(root)
     if figures and curves:
         import matplotlib
         matplotlib.use("Agg")

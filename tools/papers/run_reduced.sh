@@ -5,8 +5,8 @@
 # report with
 #   /usr/bin/python3 tools/papers/report.py runs/papers --figures docs/img
 # Exits non-zero when a run fails (its output so far is kept). Also `ctest -L paper`.
-# Usage: tools/papers/run_reduced.sh [flume|slit|slit10|baffles|check|check15|container|dam ...]
-# (default: all but slit10 and check15; the slit check dam of section A takes 13-20 min per 6 s run
+# Usage: tools/papers/run_reduced.sh [flume|flume_rr|slit|slit10|baffles|check|check15|container|dam ...]
+# (default: all but flume_rr, slit10 and check15; the slit check dam of section A takes 13-20 min per 6 s run
 # on one thread)
 set -u
 cd "$(dirname "$0")/../.."
@@ -33,6 +33,18 @@ list() {
     done
     echo "E_free30_3d_d23 $P/granular_flume/free30_3d.toml --set grains.0.diameter=0.023"
     echo "E_barrier30_3d_d23 $P/granular_flume/barrier30_3d.toml --set grains.0.diameter=0.023"
+    ;;
+  flume_rr) # section E, 2D discs with rolling resistance: EPSD mu_r = 0.2 on grains and flume,
+    # calibrated on glass-bead column collapses (docs/validation.md "Deposit shape"), 10-38 mm
+    local rr="--set 'dem.rolling=\"epsd\"' --set material.0.rolling_friction=0.2"
+    rr="$rr --set material.1.rolling_friction=0.2"
+    for s in 10 30; do
+      for k in free barrier; do
+        for d in 10 23 38; do
+          echo "E_${k}${s}_2d_d${d}_rr $P/granular_flume/${k}${s}_2d.toml --set grains.0.diameter=0.0$d $rr"
+        done
+      done
+    done
     ;;
   slit) # section B, two-level DEM: Type A SD5 (the paper's 12,393 grains), Type B with SD5 fines
     echo "B_slitA_sd5 $P/slit_dam_dem/typeA.toml"
