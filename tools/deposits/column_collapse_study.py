@@ -14,6 +14,9 @@ published scalings beside it:
       (a >= 0.65), H = H0 below.
 
 usage: column_collapse_study.py BUILD/debrisflow OUTDIR [--threads N] [--aspects 0.5,1,2,4]
+    [--count 800] [--seed S]
+--count sets the grains per column (the column's width in grains, L0/d50, grows as its square
+root: about 20 for 800 grains at a = 2), for the size effect of the deposit.
 """
 import argparse
 import csv
@@ -78,12 +81,14 @@ def main():
     p.add_argument("--aspects", default="0.5,1,2,4")
     p.add_argument("--end", type=float, default=3.0)
     p.add_argument("--only", default="", help="run the models whose name contains this")
+    p.add_argument("--count", type=int, default=COUNT, help="grains (or clumps) per column")
+    p.add_argument("--seed", type=int, default=0, help="packing seed (0: the case's)")
     args = p.parse_args()
     aspects = [float(a) for a in args.aspects.split(",")]
-    area = COUNT * math.pi * D50**2 / 4 / PHI  # column area after settling
-    print("| grains | a = H0/L0 | L0 (m) | dL/L0 linked | at t - 1 s | dL/L0 95 % mass | "
+    area = args.count * math.pi * D50**2 / 4 / PHI  # column area after settling
+    print("| grains | a = H0/L0 | L0 (m) | L0/d50 | dL/L0 linked | at t - 1 s | dL/L0 95 % mass | "
           "H/H0 | detached | quasi-2D 1.2a / 1.9a^(2/3) | true 2D rods | rods H/H0 |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for name, (case, sets) in MODELS.items():
         if args.only not in name:
             continue
@@ -91,16 +96,19 @@ def main():
             L0 = math.sqrt(area / a)
             # room to insert the grains at random before settling (clumps by their bounding circles)
             box = (5.0 if "clumps" in case else 2.6) * area / L0
+            # room for a run-out of twice the rods' scaling
+            far = max(1.6, L0 * (1 + 2 * 3.8 * max(a, 1) ** 0.73))
             s = sets + [
                 f"wall.2.point=[{L0:.5f},0,0]",
-                f"grains.0.count={COUNT}",
+                f"grains.0.count={args.count}",
                 f"grains.0.region.max=[{L0:.5f},0,{box:.4f}]",
-                f"domain.max=[1.6,0,{box + 0.05:.4f}]",
+                f"domain.max=[{far:.3f},0,{box + 0.05:.4f}]",
                 f"time.end={args.end}",
                 "output.vtk_every=0.5",
-            ]
+            ] + ([f"grains.0.seed={args.seed}"] if args.seed else [])
             slug = "".join(c if c.isalnum() else "_" for c in name)
-            out = os.path.join(args.out, f"{slug}_a{a:g}")
+            tag = (f"_n{args.count}" if args.count != COUNT else "") + (f"_s{args.seed}" if args.seed else "")
+            out = os.path.join(args.out, f"{slug}_a{a:g}{tag}")
             rows = run(args.exe, case, s, out, args.threads)
             L, H = rows[0][1], rows[0][4]
             last = rows[-1]
@@ -108,7 +116,7 @@ def main():
             aa = H / L
             ref_l, ref_n = lube(aa), nguyen(aa)
             fmt = lambda v: "—" if v is None else f"{v:.2f}"
-            print(f"| {name} | {aa:.2f} | {L:.3f} | {(last[1] - L) / L:.2f} | "
+            print(f"| {name} | {aa:.2f} | {L:.3f} | {L / D50:.0f} | {(last[1] - L) / L:.2f} | "
                   f"{(before[1] - L) / L:.2f} | {(last[2] - L) / L:.2f} | {last[4] / H:.2f} | "
                   f"{int(last[5])} | {fmt(ref_l)} | {fmt(ref_n)} | {nguyen_height(aa):.2f} |",
                   flush=True)
