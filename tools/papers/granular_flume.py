@@ -46,12 +46,11 @@ def runs(root, rolling=False):
 
 def deposit(run):
     """The deposit behind the barrier at the end of the run (runout probe along -x): its length
-    from the barrier to its upstream end, its height, the mass outside it."""
+    from the barrier to its upstream end, and its height."""
     r = read_probe(run, "deposit")
     if not r:
         return None
-    return dict(length=BARRIER_X - column(r, "front ")[-1], height=column(r, "height")[-1],
-                detached=column(r, "detached_mass")[-1])
+    return dict(length=BARRIER_X - column(r, "front ")[-1], height=column(r, "height")[-1])
 
 
 def surge(run, slope, d):
@@ -100,8 +99,6 @@ def rolling_table(root):
     for key in sorted(set(rr) & set(plain), key=lambda k: (k[0] != "free", k[1], k[2])):
         kind, slope, d = key
         for label, run in (("round discs", plain[key]), ("EPSD μ_r = 0.2", rr[key])):
-            n, m = grain_mass(run)
-            wsin = m * 9.81 * math.sin(math.radians(slope))
             row = [f"{'F' if kind == 'free' else 'B'}{slope}-{d}", label,
                    f"{wall_seconds(run):.0f} s", status(run)]
             if kind == "free":
@@ -112,19 +109,21 @@ def rolling_table(root):
                 row += ["–"] * 3
             else:
                 b, ref = barrier(run), PAPER_RATIO.get((slope, d))
-                if b is None or b["static"] <= 0:
-                    row += ["–"] * 5
-                else:  # free-flow columns empty
-                    ratio = b["peak"] / b["static"]
-                    row += ["–", "–", f"{b['peak']:.0f} / {b['static']:.1f} ({b['static'] / wsin:.2f} W sinθ)",
-                            f"{ratio:.1f} ({ref}, {pct(ratio, ref)})", deposit_text(run)]
+                wsin = grain_mass(run)[1] * 9.81 * math.sin(math.radians(slope))
+                row += ["–", "–"]  # the free-flow columns
+                if b is None:
+                    row += ["–", "–"]
+                else:
+                    ratio = f"{b['peak'] / b['static']:.1f}" if b["static"] > 0 else "–"
+                    row += [f"{b['peak']:.0f} / {b['static']:.1f} ({b['static'] / wsin:.2f} W sinθ)",
+                            f"{ratio} ({ref})"]
+                row.append(deposit_text(run))
             rows.append(row)
     if not rows:
         return []
     lines = ["Round discs against discs with rolling resistance (EPSD μ_r = 0.2 grain–grain and "
-             "grain–flume, calibrated on glass-bead column collapses), same build and sitting; "
-             "free flow: surge speed and dense depth at the section (paper's error); barrier: "
-             "peak (1 ms) / static load, peak / static (paper's ratio, error), the deposit at the "
+             "grain–flume, calibrated on glass-bead column collapses); free flow: surge speed and dense depth at the section (paper's error); barrier: "
+             "peak (1 ms) / static load, peak / static (paper's ratio), the deposit at the "
              "end:", ""]
     lines += table(["test", "grains", "wall", "status", "v [m/s]", "h dense [m]",
                     "peak / static [N]", "peak / static", "deposit length / height [m]"], rows)
