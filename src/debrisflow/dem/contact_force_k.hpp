@@ -57,8 +57,8 @@ DF_HD DF_HOT_INLINE ContactResult resolve_contact(const PairParams& p, Real delt
         // turns the spring against the slip once g_t |v_t| > mu F_n, and it then pushes the grain
         // along its old slip when the contact sticks: with e = 0.1 the discs of a settled column
         // kept spinning (rotational energy growing, settling stalled at a ratio of 0.12).
-        const Real ft_mag = std::sqrt(ft2);
-        ft = (limit / ft_mag) * ft;
+        // limit / |F_t| as limit sqrt(ft2) / ft2: the division runs beside the square root
+        ft = (limit * std::sqrt(ft2) * (Real(1) / ft2)) * ft;
         xi = r.kt > 0 ? (Real(-1) / r.kt) * ft : Vec3{};
     }
     *h.xi = xi;

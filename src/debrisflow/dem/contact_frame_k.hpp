@@ -13,9 +13,10 @@ namespace debrisflow::dem {
 DF_HD DF_HOT_INLINE Vec3 rotate_into_plane(Vec3 v, Vec3 n) {
     const Real m2 = dot(v, v);
     if (m2 == 0) return v;
+    const Real inv_m2 = Real(1) / m2; // of the stored spring: ready before n is
     const Real vn = dot(v, n);
     const Vec3 t = v - vn * n;
-    const Real q = vn * vn / m2;
+    const Real q = vn * vn * inv_m2;
     if (q < Real(1e-4)) return (1 + q * (Real(0.5) + Real(0.375) * q)) * t;
     const Real t2 = dot(t, t);
     return t2 > 0 ? std::sqrt(m2 / t2) * t : Vec3{};

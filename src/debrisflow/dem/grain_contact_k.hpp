@@ -26,8 +26,9 @@ struct GrainPairForce {
 DF_HD DF_HOT_INLINE GrainPairForce grain_pair_force(const PairParams& p, const GrainState& i,
                                                     const GrainState& j, Vec3 r, Real d2, Real dt,
                                                     HistoryRef h) {
-    const Real d = std::sqrt(d2);
-    const Vec3 n = (Real(1) / d) * r;
+    // 1/d as sqrt(d2) / d2: the division runs beside the square root, not after it
+    const Real d = std::sqrt(d2), inv_d2 = Real(1) / d2;
+    const Vec3 n = (d * inv_d2) * r;
     const Vec3 vrel = i.v - j.v - cross(i.r * i.w + j.r * j.w, n);
     // R* = r_i r_j / (r_i + r_j) and m* = m_i m_j / (m_i + m_j) with one division
     const Real rs = i.r + j.r, ms = i.m + j.m, inv = Real(1) / (rs * ms);
