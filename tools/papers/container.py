@@ -26,6 +26,34 @@ def bore_speed(front, x0=2.6, x1=3.1):
 RUNS = [("C_container2d", "dp = 10 mm"), ("C_container2d_dp5", "dp = 5 mm")]
 
 
+def arrival(front, x):
+    """First time the front reaches x, interpolated between samples (nan if it never does)."""
+    t, xf = front["time [s]"], column(front, "x_front")
+    k = np.argmax(xf >= x)
+    if xf[k] < x:
+        return float("nan")
+    if k == 0:
+        return float(t[0])
+    f = (x - xf[k - 1]) / (xf[k] - xf[k - 1])
+    return float(t[k - 1] + f * (t[k] - t[k - 1]))
+
+
+def suite_checks(run):
+    """The checks of tests/validation/rigid_container_test.cpp computed from a CLI run's
+    probes (for runs with other settings than the suite's): the bore's arrival at the
+    container's upstream face (x = 3.125 m), the container's largest |dx| until 0.05 s before
+    it, its vx 0.25 s after it, its largest |dz|, and the front speed over 2.7-3.1 m."""
+    c, f = read_probe(run, "container"), read_probe(run, "front")
+    t_hit = arrival(f, 3.125)
+    t, x, z, vx = c["time [s]"], c["x [m]"], c["z [m]"], c["vx [m/s]"]
+    before = t < t_hit - 0.05
+    after = t <= t_hit + 0.25
+    return dict(t_hit=t_hit, moved_before=float(np.abs(x[before] - x[0]).max()) if before.any()
+                else float("nan"), vx_after=float(vx[after][-1]) if after.any() else float("nan"),
+                dz=float(np.abs(z - z[0]).max()),
+                speed=0.4 / (arrival(f, 3.1) - arrival(f, 2.7)))
+
+
 def measures(run):
     """The compared quantities of one run, or None when it has no probes."""
     c, f = read_probe(run, "container"), read_probe(run, "front")
@@ -90,3 +118,13 @@ def report(root, figures):
         ax[2].set(xlabel="t [s]", ylabel="[m/s]", title="container velocity")
         lines += save_figure(fig, ax, figures, "container_dambreak2d.png", "container")
     return lines
+
+
+if __name__ == "__main__":
+    # python3 tools/papers/container.py RUN_DIR...: the suite's checks for each run.
+    import sys
+    for run in sys.argv[1:]:
+        m = suite_checks(run)
+        print(f"{run}: bore at the container {m['t_hit']:.3f} s; |dx| before {m['moved_before']:.2e} m "
+              f"(tolerance 1e-3); vx 0.25 s later {m['vx_after']:.3f} m/s (> 0.1); |dz| {m['dz']:.2e} m "
+              f"(< 2e-3); front speed 2.7-3.1 m {m['speed']:.3f} m/s (experiment 2.46)")
