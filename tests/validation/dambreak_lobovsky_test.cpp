@@ -121,8 +121,7 @@ TEST(DamBreakLobovskyKnownGap, Sensor1Peak) {
     const double peak = probe.peaks()[0] / (rho0 * g * H);
     const double mean5 = probe.peak_window_mean(0, 0.005) / (rho0 * g * H);
     // the experiment's event and its 5 ms moving mean
-    const auto exp = test::read_curve(
-        test::reference("dambreak_2d_lobovsky2014/Fig18_peak_event_5_sensors_5.dat"));
+    const auto exp = experiment("Fig18_peak_event_5_sensors_5.dat");
     std::vector<Real> t, p;
     for (const auto& [T, P] : exp) t.push_back(T * t_scale), p.push_back(P);
     const double exp_peak = *std::max_element(p.begin(), p.end());
