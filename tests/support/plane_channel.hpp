@@ -1,7 +1,8 @@
 #pragma once
-// The plane channel of the Poiseuille tests: fluid between plates at z = 0 and z = L, periodic
-// in x (12 dp long), driven by a body force F along x, started from rest without hydrostatic
-// density; and its velocity profile per lattice layer.
+// The plane channel of the Poiseuille and Couette tests: fluid between plates at z = 0 and
+// z = L, periodic in x (12 dp long), driven by a body force F along x or by the top plate
+// sliding at top_velocity along x, started from rest without hydrostatic density; and its
+// velocity profile per lattice layer.
 #include "debrisflow/app/simulation.hpp"
 #include <cmath>
 #include <fmt/format.h>
@@ -14,7 +15,7 @@ namespace debrisflow::test {
 
 // The case text; `sph` is the body of its [sph] table (sound speed, viscosity model ...).
 inline std::string plane_channel_case(double dp, double L, double F, double t_end,
-                                      const std::string& sph) {
+                                      const std::string& sph, double top_velocity = 0) {
     return fmt::format(R"(
 dimensions = 2
 dp = {0}
@@ -46,8 +47,9 @@ name = "top"
 shape = "plane"
 point = [0, {7}]
 normal = [0, -1]
+velocity = [{8}, 0]
 )",
-                       dp, t_end, F, -5 * dp, 12 * dp, L + 5 * dp, sph, L);
+                       dp, t_end, F, -5 * dp, 12 * dp, L + 5 * dp, sph, L, top_velocity);
 }
 
 // Mean x velocity per lattice layer, {z of the layer's centre, u} from the bottom plate up

@@ -1,11 +1,15 @@
 // mDBC boundary density (sph/mdbc_k.hpp): a boundary particle whose ghost node lies inside a
 // fluid of uniform density takes that density; one whose ghost node sees less than half a
 // kernel of fluid keeps the density DBC's continuity equation gave it (never below rho_min).
+// The no-slip variant (sph.no_slip = "mdbc") also mirrors the fluid's velocity at the ghost
+// node: a linear shear flow is reproduced there exactly (first-order consistency).
 #include "debrisflow/kernels/wendland_c2_k.hpp"
 #include "debrisflow/neighbors/cell_grid.hpp"
 #include "debrisflow/particles/particle_set.hpp"
 #include "debrisflow/sph/mdbc_k.hpp"
+#include <array>
 #include <gtest/gtest.h>
+#include <vector>
 
 using namespace debrisflow;
 
@@ -39,6 +43,16 @@ struct Floor {
         grid.build(set.x.data(), set.y.data(), set.z.data(), set.size());
     }
 
+    // The ghost-node record (v_g - v_b, seen) of the probe after mDBC with the no-slip variant.
+    std::array<Real, 4> ghost_after_mdbc() {
+        std::vector<Real> ghost(4 * std::size_t(set.size()), Real(-1));
+        const sph::MdbcDensity<kernels::WendlandC2> mdbc{
+            set.view(), grid.view(), kernels::WendlandC2(h, 2), h, 1000, 2, ghost.data()};
+        mdbc(probe);
+        const auto k = 4 * std::size_t(probe);
+        return {ghost[k], ghost[k + 1], ghost[k + 2], ghost[k + 3]};
+    }
+
     Real boundary_density_after_mdbc(Real before, Real rho_min = 1000) {
         set.rho[probe] = before;
         const sph::MdbcDensity<kernels::WendlandC2> mdbc{
@@ -58,6 +72,27 @@ TEST(MdbcDensity, DryGhostKeepsTheContinuityDensity) {
     Floor f(0); // no fluid at all: nothing to mirror
     EXPECT_EQ(f.boundary_density_after_mdbc(1007), 1007);
     EXPECT_EQ(f.boundary_density_after_mdbc(990), 1000); // never below rho_min
+}
+
+TEST(MdbcDensity, NoSlipGhostVelocityOfALinearShearFlow) {
+    Floor f(8);
+    // u = gamma z in the fluid; the probe's ghost node is at z = dp/2 (the probe at -dp/2)
+    const Real gamma = 3;
+    for (Index i = 0; i < f.set.size(); ++i)
+        if (f.set.kind[i] == std::uint8_t(particles::Kind::fluid)) f.set.vx[i] = gamma * f.set.z[i];
+    const auto g = f.ghost_after_mdbc();
+    EXPECT_NEAR(g[0], gamma * Real(0.5) * dp, 1e-12);
+    EXPECT_EQ(g[1], 0);
+    EXPECT_NEAR(g[2], 0, 1e-12);
+    EXPECT_EQ(g[3], 1);
+    // the mirrored wall velocity 2 v_w - v_g continues the profile linearly to z = -dp/2
+    EXPECT_NEAR(-g[0], gamma * f.set.z[f.probe], 1e-12);
+}
+
+TEST(MdbcDensity, NoSlipDryGhostCarriesNoVelocity) {
+    Floor f(0);
+    const auto g = f.ghost_after_mdbc();
+    for (Real c : g) EXPECT_EQ(c, 0);
 }
 
 } // namespace

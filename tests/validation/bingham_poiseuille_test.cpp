@@ -27,12 +27,13 @@ double bingham(double z) {
     return rho * F / (2 * mu_p) * (a * a - s * s) - tau_y / mu_p * (a - s);
 }
 
-std::string channel_case(double dp) {
+// `walls`: extra [sph] lines choosing the wall treatment (DBC with Morris's no-slip if empty).
+std::string channel_case(double dp, const std::string& walls) {
     return test::plane_channel_case(dp, L, F, 0.35,
                                     fmt::format("c0 = 0.5\nviscosity = \"bingham\"\n"
                                                 "consistency = {}\nyield_stress = {}\n"
-                                                "regularization = {}\ndiffusion = \"none\"",
-                                                mu_p, tau_y, m_reg));
+                                                "regularization = {}\ndiffusion = \"none\"\n{}",
+                                                mu_p, tau_y, m_reg, walls));
 }
 
 // Yield surface from the measured shear-rate profile: in the sheared layers the Bingham law
@@ -59,11 +60,9 @@ std::pair<double, double> plug_width(const std::vector<std::pair<double, double>
     return {-2 * icept / slope, slope};
 }
 
-} // namespace
-
-TEST(BinghamPoiseuille, PlugWidthAndVelocityProfile) {
+void check_plug_width_and_velocity_profile(const std::string& walls) {
     const double dp = L / layers;
-    app::Simulation sim(test::case_from_toml("bingham_poiseuille", channel_case(dp)));
+    app::Simulation sim(test::case_from_toml("bingham_poiseuille", channel_case(dp, walls)));
     sim.run({"", true, 0, 0.25});
     const auto early = test::layer_profile(sim, dp);
     sim.run({"", true, 0, 0.35});
@@ -90,4 +89,16 @@ TEST(BinghamPoiseuille, PlugWidthAndVelocityProfile) {
     EXPECT_LT(l2, 0.03);
     EXPECT_NEAR(u_plug, u_plug_exact, 0.03 * u_plug_exact);
     EXPECT_NEAR(width, 2 * z0, 0.03 * 2 * z0);
+}
+
+} // namespace
+
+TEST(BinghamPoiseuille, PlugWidthAndVelocityProfile) {
+    check_plug_width_and_velocity_profile("");
+}
+
+// The same with mDBC walls and mDBC's no-slip variant (English et al. 2022: wall particles carry
+// the mirrored ghost-node velocity 2 v_w - v_g), the wall choice for viscous slurries.
+TEST(BinghamPoiseuille, PlugWidthAndVelocityProfileMdbcNoSlip) {
+    check_plug_width_and_velocity_profile("boundary = \"mdbc\"\nno_slip = \"mdbc\"");
 }

@@ -136,3 +136,11 @@ TEST(SphDevicePath, DamBreakMdbc) {
     check("cases/dambreak2d.toml", {"sph.boundary=\"mdbc\"", "dp=0.015"}, 0.3, 0.015, 1000,
           round_off);
 }
+// mDBC's no-slip variant with a Bingham slurry: the mirrored ghost-node velocities in the
+// viscous pair term and in the apparent viscosity's strain rate, in both loops.
+TEST(SphDevicePath, BinghamCollapseMdbcNoSlip) {
+    check("cases/validation/viscous_collapse2d.toml",
+          {"sph.boundary=\"mdbc\"", "sph.no_slip=\"mdbc\"", "sph.viscosity=\"bingham\"",
+           "sph.consistency=10", "sph.yield_stress=20", "sph.regularization=10", "dp=0.005"},
+          0.05, 0.005, 1000, round_off);
+}

@@ -43,7 +43,7 @@ int check(const std::string& file, const std::vector<std::string>& sets) {
         std::cout << fmt::format("sph: dp = {} m, kernel {}, h = {:.4g} m, c0 = {:.4g} m/s, "
                                  "walls {}, pairs {}; initial dt {:.4g} s ({})\n",
                                  spec.dp, spec.sph.kernel, spec.sph.h, spec.sph.c0,
-                                 spec.sph.boundary, sph::pair_loop_words(spec.sph), d.dt,
+                                 sph::wall_words(spec.sph), sph::pair_loop_words(spec.sph), d.dt,
                                  d.limiter);
     }
     if (sim.has_grains()) {

@@ -112,6 +112,18 @@ void read_sph(const ConfigTable& t, CaseSpec& c) {
     p.boundary_min_pressure = t.real("boundary_min_pressure", 0);
     if (p.boundary_min_pressure > 0) t.fail("boundary_min_pressure", "must be <= 0 [Pa]");
     p.boundary = t.choice("boundary", {"dbc", "mdbc"}, "dbc");
+    p.no_slip = t.choice("no_slip", {"morris", "mdbc"}, "morris");
+    if (p.no_slip == "mdbc") {
+        if (p.boundary != "mdbc")
+            t.fail("no_slip", "\"mdbc\" mirrors the fluid's velocity at mDBC's ghost nodes; it "
+                              "needs sph.boundary = \"mdbc\"");
+        const bool walls_slip_free = sph::ViscosityRegistry::visit_name(
+            p.viscosity, [&]<class V>() { return V::no_slip_walls; });
+        if (!walls_slip_free)
+            t.fail("no_slip", "the viscosity model \"" + p.viscosity +
+                                  "\" sets no wall velocity (the artificial viscosity uses the "
+                                  "wall's own); choose a laminar or rheology model");
+    }
     p.pair_loop = t.choice("pair_loop", {"list", "cells"}, "list");
     t.finish();
 }
@@ -311,8 +323,10 @@ CaseSpec read_case_text(const std::string& text, const std::string& path,
             w.material = t.string("material", "");
             if (!w.material.empty())
                 require_named(t, "material", c.dem.materials, w.material, "[[material]]");
-            w.velocity = t.vec3("velocity", c.dim, {});
         }
+        // A prescribed translation: the grains' geometric wall and the fluid's boundary
+        // particles move with it (a wall, not a [[structure]]).
+        w.velocity = t.vec3("velocity", c.dim, {});
         if (t.has("remove_at")) {
             w.remove_at = t.real("remove_at");
             if (*w.remove_at < 0) t.fail("remove_at", "must be >= 0");

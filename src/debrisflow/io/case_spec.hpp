@@ -48,7 +48,7 @@ struct WallSpec {
     int layers = 0;
     std::optional<Real> remove_at;
     std::string material; // DEM: contact material ("" = the grain's own)
-    Vec3 velocity;        // DEM: prescribed translation velocity [m/s]
+    Vec3 velocity;        // prescribed translation velocity [m/s] (grains' wall, fluid's particles)
     // type "boxes": a union of solid boxes {min, max} forming one named wall (structures)
     std::vector<std::array<Vec3, 2>> boxes;
     std::string structure; // the [[structure]] type that produced it ("" for [[wall]])

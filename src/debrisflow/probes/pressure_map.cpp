@@ -18,6 +18,9 @@ std::unique_ptr<Probe> PressureMapProbe::from_config(const ProbeSetup& s) {
         s.t.fail("wall", "a pressure map tiles a face of the wall's bounding box; wall \"" +
                              w.name + "\" is a " + w.type +
                              " (use a box, an open_tank or a [[structure]])");
+    if (norm(w.velocity) > 0)
+        s.t.fail("wall", "wall \"" + w.name +
+                             "\" moves (its velocity); a pressure map tiles a face that stays put");
     const std::string a = s.t.choice("axis", {"x", "y", "z"}, "x");
     const int axis = a == "x" ? 0 : (a == "y" ? 1 : 2);
     const Vec3 normal = s.t.vec3("normal", c.dim, {});

@@ -112,7 +112,8 @@ std::vector<WallPoint> mesh_wall(const io::ShapeSpec& s, Real dp, int layers,
 // Every particle of a block must start inside the domain (else the first step would stop the
 // run as unstable): names the block and the first point outside.
 void require_inside_domain(const std::vector<Vec3>& pts, const io::CaseSpec& c,
-                           const std::string& what, const std::string& cause) {
+                           const std::string& what, const std::string& cause,
+                           const std::string& remedy = "move the block") {
     std::size_t outside = 0;
     Vec3 first;
     for (const Vec3& p : pts)
@@ -126,9 +127,10 @@ void require_inside_domain(const std::vector<Vec3>& pts, const io::CaseSpec& c,
     throw InputError(fmt::format(
         "{}: {} of {} particles lie outside the domain (the first at ({:.4g}, {:.4g}, {:.4g}) m; "
         "{}); the domain is ({:.4g}, {:.4g}, {:.4g}) to ({:.4g}, {:.4g}, {:.4g}) m: enlarge "
-        "domain.min/domain.max ({}) or move the block",
+        "domain.min/domain.max ({}) or {}",
         what, outside, pts.size(), first.x, first.y, first.z, cause, c.domain.lo.x, c.domain.lo.y,
-        c.domain.lo.z, c.domain.hi.x, c.domain.hi.y, c.domain.hi.z, c.domain_origin.at("max")));
+        c.domain.lo.z, c.domain.hi.x, c.domain.hi.y, c.domain.hi.z, c.domain_origin.at("max"),
+        remedy));
 }
 
 // Normal into the fluid and depth behind the surface of the wall point p.
@@ -254,6 +256,16 @@ ParticleId build_particles(const io::CaseSpec& c, particles::ParticleSet& set,
         for (const WallPoint& wp : walls.back()) pts.push_back(wp.p);
         require_inside_domain(pts, c, w.origin.block() + ": wall '" + w.name + "'",
                               fmt::format("its {} layers of dp = {} m", w.layers, c.dp));
+        if (norm(w.velocity) > 0) {
+            // A moving wall's particles must stay in the domain (or wrap through a periodic
+            // side) until the end: where they are at time.end.
+            std::vector<Vec3> moved = pts;
+            for (Vec3& p : moved) p += c.t_end * w.velocity;
+            require_inside_domain(
+                moved, c, w.origin.at("velocity"),
+                fmt::format("where the wall's particles are at time.end = {} s", c.t_end),
+                "slow the wall (or make the direction it moves in periodic)");
+        }
         boundary.insert(boundary.end(), pts.begin(), pts.end());
     }
     for (const auto& b : bodies)
@@ -343,7 +355,9 @@ ParticleId build_particles(const io::CaseSpec& c, particles::ParticleSet& set,
                     p.y <= col.hi.y + reach && col.top + dot(p, down) > 0)
                     pressure = std::max(pressure, sph.rho0 * g * (col.top + dot(p, down)));
             const Real rho = eos.density(pressure);
-            set.add(p, {}, rho, rho * volume, particles::Kind::boundary, std::int16_t(w));
+            // a moving wall's particles carry its velocity (SphSolver translates them)
+            set.add(p, c.walls[w].velocity, rho, rho * volume, particles::Kind::boundary,
+                    std::int16_t(w));
             set.set_wall(set.size() - 1, wp.n, wp.d);
         }
     // Body boundary particles: the hydrostatic pressure of the column they start in.

@@ -1,6 +1,7 @@
 #pragma once
 #include "debrisflow/neighbors/grid_view_k.hpp"
 #include "debrisflow/particles/particle_set.hpp"
+#include "debrisflow/sph/no_slip_wall_k.hpp"
 #include <cmath>
 
 namespace debrisflow::sph {
@@ -8,23 +9,14 @@ namespace debrisflow::sph {
 // Apparent viscosity of fluid particle i for a generalised-Newtonian model: the SPH velocity
 // gradient grad v_i = sum_j m_j / rho_j (v_j - v_i) (x) grad W_ij (Monaghan 1992, eq. 2.6 form),
 // the strain rate gamma_dot = sqrt(2 D:D) with D = (grad v + grad v^T) / 2, then
-// mu_i = model.apparent_viscosity(gamma_dot, p_i). Wall particles carry the no-slip
-// extrapolated velocity v_B = -(d_B / d_A) v_A (Morris et al. 1997, eq. 30), as in the
-// viscous pair term, so the wall shear is not halved. Boundary particles get mu = 0 (the pair
-// term uses the fluid partner's viscosity).
-// v_j - v_i as the velocity-gradient sum of fluid particle i sees it: a wall particle j
-// carries the no-slip extrapolated velocity (Morris et al. 1997, eq. 30).
-DF_HD inline Vec3 gradient_velocity_difference(const particles::ParticleView& pv, Index i, Index j,
-                                               Vec3 xi, Vec3 vi, Real half_dp) {
-    Vec3 dv = pv.vel(j) - vi;
-    if (!pv.is_fluid(j) && pv.wd[j] > 0) {
-        const Vec3 n{pv.wnx[j], pv.wny[j], pv.wnz[j]};
-        const Real d_fluid = dot(xi - pv.pos(j), n) - pv.wd[j];
-        const Real beta = 1 + pv.wd[j] / (d_fluid > half_dp ? d_fluid : half_dp);
-        dv = beta * dv;
-    }
-    (void)i;
-    return dv;
+// mu_i = model.apparent_viscosity(gamma_dot, p_i). Wall particles carry the no-slip wall
+// velocity of the viscous pair term (NoSlipWall: Morris's or mDBC's), so the wall shear is not
+// halved. Boundary particles get mu = 0 (the pair term uses the fluid partner's viscosity).
+// v_j - v_i as the velocity-gradient sum of fluid particle i sees it.
+DF_HD inline Vec3 gradient_velocity_difference(const particles::ParticleView& pv,
+                                               const NoSlipWall& wall, Index j, Vec3 xi, Vec3 vi) {
+    const Vec3 dv = pv.vel(j) - vi;
+    return pv.is_fluid(j) ? dv : -1 * wall.difference(pv, j, xi, -1 * dv);
 }
 
 // gamma_dot = sqrt(2 D:D) from the symmetric gradient D = (xx, yy, zz, xy, xz, yz).
@@ -50,7 +42,7 @@ template <class Kernel, class Model> struct ApparentViscosity {
     neighbors::GridView grid;
     Kernel kernel;
     Model model;
-    Real half_dp;
+    NoSlipWall wall;
 
     DF_HD Real strain_rate(Index i) const {
         const Vec3 xi = pv.pos(i), vi = pv.vel(i);
@@ -58,7 +50,7 @@ template <class Kernel, class Model> struct ApparentViscosity {
         grid.for_each_neighbor(i, xi, pv.x, pv.y, pv.z, [&](Index j, Vec3 r, Real r2) {
             const Vec3 gw = kernel.grad_over_r(std::sqrt(r2)) * r;
             add_symmetric_gradient(d, pv.mass[j] / pv.rho[j],
-                                   gradient_velocity_difference(pv, i, j, xi, vi, half_dp), gw);
+                                   gradient_velocity_difference(pv, wall, j, xi, vi), gw);
         });
         return strain_rate_of(d);
     }

@@ -5,6 +5,7 @@
 #include "debrisflow/neighbors/grid_view_k.hpp"
 #include "debrisflow/particles/particle_set.hpp"
 #include "debrisflow/sph/apparent_viscosity_k.hpp"
+#include "debrisflow/sph/no_slip_wall_k.hpp"
 
 namespace debrisflow::sph {
 
@@ -29,7 +30,7 @@ template <class Kernel, class Viscosity, class Diffusion> struct PairTerms {
     const Real* vol;
     const Real* tau; // SPS stress / rho^2, 6 per particle (xx, xy, xz, yy, yz, zz), or nullptr:
                      // the stress of the previous force evaluation (see sps_tau below)
-    Real half_dp;    // dp / 2: smallest fluid-wall distance used in the no-slip extrapolation
+    NoSlipWall wall; // the wall velocity the viscous terms see (Morris's or mDBC's no-slip)
     Real eta2;       // 0.01 h^2, regulariser of 1 / r^2 (Monaghan 1992)
     models::TaitEos eos{}; // the sound speed where cs is nullptr
 
@@ -83,8 +84,8 @@ template <class Kernel, class Viscosity, class Diffusion> struct PairTerms {
         s.mu_i = a.fluid ? a.mu : b.mu;
         s.mu_j = a.fluid ? b.mu : a.mu;
         if constexpr (Viscosity::no_slip_walls)
-            s.v_visc = s.boundary_j ? no_slip_velocity(a.fluid ? b : a, a.fluid ? j : i,
-                                                       a.fluid ? a.x : b.x, s.v)
+            s.v_visc = s.boundary_j ? (a.fluid ? wall.difference(pv, j, a.x, s.v)
+                                               : -1 * wall.difference(pv, i, b.x, -1 * s.v))
                                     : s.v;
         Result out;
         out.cont = dot(s.v, s.grad_w);
@@ -93,20 +94,6 @@ template <class Kernel, class Viscosity, class Diffusion> struct PairTerms {
         out.d = s.boundary_j ? models::DensityRates{0, 0} : diff.pair(s);
         out.grad_w = s.grad_w;
         return out;
-    }
-
-    // No-slip wall velocity for viscous terms (Morris, Fox & Zhu 1997, eq. 30): the wall
-    // particle B carries v_B = -(d_B/d_A) v_A, so v_AB = beta v_A, beta = 1 + d_B/d_A, with d_A
-    // the fluid particle's and d_B the wall particle's distance to the wall surface. d_A is
-    // bounded below by dp/2 (Morris caps beta at 1.5 for particles that get closer than the
-    // lattice allows; our fluid starts dp/2 from the wall, so the bound is on d_A instead).
-    DF_HD DF_HOT_INLINE Vec3 no_slip_velocity(const Side& wall, Index b, Vec3 x_fluid,
-                                              Vec3 v) const {
-        if (pv.wd[b] <= 0) return v; // no wall geometry: plain DBC
-        const Vec3 n{pv.wnx[b], pv.wny[b], pv.wnz[b]};
-        const Real d_fluid = dot(x_fluid - wall.x, n) - pv.wd[b];
-        const Real beta = 1 + pv.wd[b] / (d_fluid > half_dp ? d_fluid : half_dp);
-        return beta * v;
     }
 
     // (tau_i + tau_j) . g

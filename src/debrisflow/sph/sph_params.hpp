@@ -31,6 +31,10 @@ struct SphParams {
     // Boundary particles' density: "dbc" (continuity, Crespo et al. 2007) or "mdbc" (mirrored
     // from the fluid at a ghost node, English et al. 2022; particles with wall geometry).
     std::string boundary = "dbc";
+    // The wall velocity of the viscous terms (models with no-slip walls): "morris" (per pair,
+    // Morris et al. 1997) or "mdbc" (the mirrored ghost-node velocity, English et al. 2022;
+    // needs boundary = "mdbc").
+    std::string no_slip = "morris";
     // How the force evaluation visits pairs: "list" (half pair list with a Verlet skin,
     // scattered to both particles; the host's way) or "cells" (each particle gathers its
     // neighbours from the cell grid, every pair evaluated from both sides; the GPU's way,
@@ -43,6 +47,12 @@ struct SphParams {
 inline const char* pair_loop_words(const SphParams& p) {
     return p.gathers() ? "gathered over cells (the GPU's loop, run on the host)"
                        : "from a half list (host)";
+}
+
+// How `check` and the log name the wall treatment.
+inline std::string wall_words(const SphParams& p) {
+    return p.no_slip == "mdbc" ? p.boundary + " (no-slip velocity mirrored at the ghost nodes)"
+                               : p.boundary;
 }
 
 // Volume a particle of the lattice stands for, dp^dim (2D: per metre of thickness); a

@@ -114,14 +114,14 @@ void SphSolver::update_pressure(bool arrays) {
 void SphSolver::update_viscosity(bool pairs) {
     auto pv = set_.view();
     const auto gv = grid_.view();
-    const Real half_dp = Real(0.5) * params_.dp;
+    const NoSlipWall wall = no_slip_wall();
     std::visit(
         [&](const auto& kernel, const auto& visc) {
             using K = std::decay_t<decltype(kernel)>;
             using V = std::decay_t<decltype(visc)>;
             if constexpr (V::needs_apparent_viscosity) {
                 if (!pairs) {
-                    exec::for_each(pv.n, ApparentViscosity<K, V>{pv, gv, kernel, visc, half_dp});
+                    exec::for_each(pv.n, ApparentViscosity<K, V>{pv, gv, kernel, visc, wall});
                     return;
                 }
                 // Half pair list: each pair adds vol_j (v_j - v_i) (x) grad W_ij to i and the
@@ -141,13 +141,12 @@ void SphSolver::update_viscosity(bool pairs) {
                         const Vec3 gw = kernel.grad_over_r(std::sqrt(r2)) * r;
                         if (a.fluid)
                             add_symmetric_gradient(
-                                di, vol[j],
-                                gradient_velocity_difference(pv, i, j, a.x, a.v, half_dp), gw);
+                                di, vol[j], gradient_velocity_difference(pv, wall, j, a.x, a.v),
+                                gw);
                         if (fj)
                             add_symmetric_gradient(
                                 dj, a.vol,
-                                -1 * gradient_velocity_difference(pv, j, i, xj, pv.vel(j), half_dp),
-                                gw);
+                                -1 * gradient_velocity_difference(pv, wall, i, xj, pv.vel(j)), gw);
                     },
                     [=](Index i, const Real* d) {
                         pv.mu[i] = pv.is_fluid(i)
@@ -254,6 +253,23 @@ Real SphSolver::boundary_min_density() const {
     return eos_.density(params_.boundary_min_pressure);
 }
 
+namespace {
+// A [[wall]]'s particles (group >= 0; a body's and an FEM surface's are -1 and moved by their
+// phases) translate with the wall's prescribed velocity: x = x_from + dt v, wrapped through
+// periodic sides. A fixed wall's particles (v = 0) stay where they are.
+DF_HD inline void translate_wall_particle(const particles::ParticleView& pv, Index i,
+                                          const Real (&from)[3], Real dt, const Domain& d) {
+    if (pv.group[i] < 0) return;
+    const Real v[3] = {pv.vx[i], pv.vy[i], pv.vz[i]};
+    if (v[0] == 0 && v[1] == 0 && v[2] == 0) return;
+    Real* xs[3] = {pv.x, pv.y, pv.z};
+    for (int k = 0; k < 3; ++k) {
+        const Real x = from[k] + dt * v[k];
+        xs[k][i] = d.periodic[k] ? wrap(x, d.lo[k], d.hi[k]) : x;
+    }
+}
+} // namespace
+
 void SphSolver::predictor(Real dt) {
     ScopedTimer timer(t_integrate_);
     const Index n = set_.size();
@@ -270,6 +286,7 @@ void SphSolver::predictor(Real dt) {
         pv.rho[i] += hdt * pv.drho[i];
         if (!pv.is_fluid(i)) {
             if (pv.rho[i] < rho_ref) pv.rho[i] = rho_ref; // DBC: never below rho0
+            translate_wall_particle(pv, i, {x0[i], y0[i], z0[i]}, hdt, d);
             return;
         }
         Real* xs[3] = {pv.x, pv.y, pv.z};
@@ -296,6 +313,7 @@ void SphSolver::corrector(Real dt) {
         pv.rho[i] = r0[i] * (2 - eps) / (2 + eps);
         if (!pv.is_fluid(i)) {
             if (pv.rho[i] < rho_ref) pv.rho[i] = rho_ref;
+            translate_wall_particle(pv, i, {x0[i], y0[i], z0[i]}, dt, d);
             return;
         }
         const Real vn[3] = {vx0[i], vy0[i], vz0[i]};
@@ -326,7 +344,10 @@ void SphSolver::verlet_step(Real dt, bool euler) {
         const Real r_new = (euler ? pv.rho[i] : ro[i]) + (euler ? dt : 2 * dt) * pv.drho[i];
         ro[i] = pv.rho[i];
         pv.rho[i] = pv.is_fluid(i) || r_new >= rho_ref ? r_new : rho_ref;
-        if (!pv.is_fluid(i)) return;
+        if (!pv.is_fluid(i)) {
+            translate_wall_particle(pv, i, {pv.x[i], pv.y[i], pv.z[i]}, dt, d);
+            return;
+        }
         Real* xs[3] = {pv.x, pv.y, pv.z};
         Real* vs[3] = {pv.vx, pv.vy, pv.vz};
         Real* vo[3] = {vxo, vyo, vzo};
@@ -344,8 +365,8 @@ void SphSolver::verlet_step(Real dt, bool euler) {
 std::size_t SphSolver::memory_bytes() const {
     std::size_t b = set_.bytes() + grid_.bytes() + list_.bytes();
     for (const auto& t : buffers_.per_thread) b += bytes_of(t);
-    return b + bytes_of(prho_, cs_, vol_, tau_next_, xref_, yref_, zref_, x0_, y0_, z0_, vx0_, vy0_,
-                        vz0_, rho0_);
+    return b + bytes_of(prho_, cs_, vol_, tau_next_, ghost_velocity_, xref_, yref_, zref_, x0_, y0_,
+                        z0_, vx0_, vy0_, vz0_, rho0_);
 }
 
 void SphSolver::add_timings(time::Timings& t) const {

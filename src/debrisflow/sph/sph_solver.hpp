@@ -5,6 +5,7 @@
 #include "debrisflow/neighbors/cell_grid.hpp"
 #include "debrisflow/neighbors/pair_list.hpp"
 #include "debrisflow/particles/particle_set.hpp"
+#include "debrisflow/sph/no_slip_wall_k.hpp"
 #include "debrisflow/sph/sph_models.hpp"
 #include "debrisflow/time/phase.hpp"
 #include <vector>
@@ -76,6 +77,9 @@ private:
     // fluid at its ghost node (MdbcDensity); run before the pressures of a force evaluation.
     void update_boundary_density();
     Real boundary_min_density() const;
+    // The wall velocity the viscous terms see: Morris's extrapolation, or with
+    // sph.no_slip = "mdbc" the ghost-node velocities of the last update_boundary_density.
+    NoSlipWall no_slip_wall() const;
     // Laminar+SPS constants (C_s dp)^2 and 2/3 C_I dp^2 (zeros for other viscosities).
     struct SpsConstants {
         Real smag = 0, blin = 0;
@@ -98,6 +102,9 @@ private:
     neighbors::CellGrid grid_;
     std::vector<Real> prho_, cs_, vol_;
     std::vector<Real> tau_next_; // SPS stress of the gather loop, swapped in after it
+    // sph.no_slip = "mdbc": per particle v_ghost - v_b and whether the ghost saw fluid (4 per
+    // particle; written by update_boundary_density, read in the same force evaluation)
+    std::vector<Real> ghost_velocity_;
     neighbors::PairList list_;
     exec::ScatterBuffers buffers_;
     std::vector<Real> xref_, yref_, zref_; // positions at the last pair-list build

@@ -25,7 +25,7 @@ template <class F> void SphSolver::with_pair_terms(F&& f, bool pairs) {
             const bool arrays = pairs;
             f(PairTerms<K, V, D>{pv, kernel, visc, diff, arrays ? prho_.data() : nullptr,
                                  arrays ? cs_.data() : nullptr, arrays ? vol_.data() : nullptr,
-                                 sps ? set_.sps_tau.data() : nullptr, Real(0.5) * params_.dp,
+                                 sps ? set_.sps_tau.data() : nullptr, no_slip_wall(),
                                  Real(0.01) * params_.h * params_.h, eos_});
         },
         models_.kernel, models_.viscosity, models_.diffusion);
