@@ -365,8 +365,8 @@ void SphSolver::verlet_step(Real dt, bool euler) {
 std::size_t SphSolver::memory_bytes() const {
     std::size_t b = set_.bytes() + grid_.bytes() + list_.bytes();
     for (const auto& t : buffers_.per_thread) b += bytes_of(t);
-    return b + bytes_of(prho_, cs_, vol_, tau_next_, ghost_velocity_, xref_, yref_, zref_, x0_, y0_,
-                        z0_, vx0_, vy0_, vz0_, rho0_);
+    return b + bytes_of(prho_, cs_, vol_, tau_next_, ghost_velocity_, mdbc_rows_, xref_, yref_,
+                        zref_, x0_, y0_, z0_, vx0_, vy0_, vz0_, rho0_);
 }
 
 void SphSolver::add_timings(time::Timings& t) const {

@@ -76,6 +76,9 @@ private:
     // mDBC: every boundary particle with wall geometry takes the density mirrored from the
     // fluid at its ghost node (MdbcDensity); run before the pressures of a force evaluation.
     void update_boundary_density();
+    // The list path's mDBC rows: boundary particles whose ghost node may see fluid before the
+    // next list build (boundary_density.cpp).
+    void refresh_mdbc_rows();
     Real boundary_min_density() const;
     // The wall velocity the viscous terms see: Morris's extrapolation, or with
     // sph.no_slip = "mdbc" the ghost-node velocities of the last update_boundary_density.
@@ -105,6 +108,9 @@ private:
     // sph.no_slip = "mdbc": per particle v_ghost - v_b and whether the ghost saw fluid (4 per
     // particle; written by update_boundary_density, read in the same force evaluation)
     std::vector<Real> ghost_velocity_;
+    std::vector<Index> mdbc_rows_;
+    long mdbc_rows_builds_ = -1;
+    std::uint64_t mdbc_rows_layout_ = 0;
     neighbors::PairList list_;
     exec::ScatterBuffers buffers_;
     std::vector<Real> xref_, yref_, zref_; // positions at the last pair-list build
