@@ -6,6 +6,7 @@
 #include "debrisflow/app/simulation.hpp"
 #include <cmath>
 #include <fmt/format.h>
+#include <iostream>
 #include <map>
 #include <string>
 #include <utility>
@@ -66,6 +67,28 @@ inline std::vector<std::pair<double, double>> layer_profile(app::Simulation& sim
     std::vector<std::pair<double, double>> out;
     for (auto& [k, e] : acc) out.push_back({(k + 0.5) * dp, e.first / e.second});
     return out;
+}
+
+// Runs sim to each of `times` in turn and returns there the L2 error of the fluid's x velocity
+// against exact(z, t), relative to the exact profile's norm (printed with `label`).
+template <class Exact>
+std::vector<double> profile_errors(app::Simulation& sim, const std::vector<double>& times,
+                                   Exact&& exact, const std::string& label) {
+    std::vector<double> errors;
+    for (double t : times) {
+        sim.run({"", true, 0, t});
+        const auto& s = sim.particles();
+        double num = 0, den = 0;
+        for (Index i = 0; i < s.size(); ++i) {
+            if (s.kind[i] != 0) continue;
+            const double ua = exact(s.z[i], t);
+            num += (s.vx[i] - ua) * (s.vx[i] - ua);
+            den += ua * ua;
+        }
+        errors.push_back(std::sqrt(num / den));
+        std::cout << fmt::format("{} t = {} s: L2 error {:.3e}\n", label, t, errors.back());
+    }
+    return errors;
 }
 
 } // namespace debrisflow::test

@@ -129,35 +129,13 @@ max = [0.3, 0.15]
 }
 
 TEST(ProbeInput, PressureMapRefusesAMovingWall) {
-    const std::string e = test::input_error_of("map_on_moving_wall", R"(
-dimensions = 2
-dp = 0.01
-[time]
-end = 0.01
-[domain]
-min = [-0.1, -0.1]
-max = [0.6, 0.4]
-[sph]
-c0 = 20
-[[fluid]]
-name = "water"
-shape = "box"
-min = [0, 0]
-max = [0.1, 0.1]
-[[wall]]
-name = "tank"
-shape = "open_tank"
-min = [0, 0]
-max = [0.4, 0.25]
-velocity = [0.1, 0]
-[[probe]]
-name = "map"
-type = "pressure_map"
-wall = "tank"
-axis = "x"
-normal = [-1, 0]
-panels = [2, 1]
-)");
-    EXPECT_NE(e.find("probe.0.wall"), std::string::npos) << e;
+    // The column case with its tank moving and a pressure map on the tank's right side.
+    std::string toml = column_case(0, "+x");
+    const std::string tank_max = "max = [0.4, 0.25]\n";
+    toml.insert(toml.find(tank_max) + tank_max.size(), "velocity = [0.1, 0]\n");
+    toml += "[[probe]]\nname = \"map\"\ntype = \"pressure_map\"\nwall = \"tank\"\naxis = \"x\"\n"
+            "normal = [-1, 0]\npanels = [2, 1]\n";
+    const std::string e = test::input_error_of("map_on_moving_wall", toml);
+    EXPECT_NE(e.find("probe.1.wall"), std::string::npos) << e;
     EXPECT_NE(e.find("moves"), std::string::npos) << e;
 }
