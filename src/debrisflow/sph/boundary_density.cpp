@@ -10,10 +10,11 @@ void SphSolver::update_boundary_density() {
     const Real rho_min = boundary_min_density();
     const bool no_slip = params_.no_slip == "mdbc";
     // The half list's path visits only the boundary particles whose ghost node may see fluid
-    // (refresh_mdbc_rows); the others keep their density, and zero ghost velocities.
+    // (refresh_mdbc_rows); the others keep their density, and zero ghost velocities. The
+    // cells path visits every particle, and MdbcDensity writes every ghost record it visits.
     const bool rows = !params_.gathers();
     if (rows) refresh_mdbc_rows();
-    if (no_slip && (!rows || ghost_velocity_.size() != 4 * std::size_t(pv.n)))
+    if (no_slip && ghost_velocity_.size() != 4 * std::size_t(pv.n))
         ghost_velocity_.assign(4 * std::size_t(pv.n), Real(0));
     Real* ghost = no_slip ? ghost_velocity_.data() : nullptr;
     std::visit(
