@@ -1,4 +1,5 @@
 #include "debrisflow/dem/dem_solver.hpp"
+#include "debrisflow/dem/grain_kick_drift_k.hpp"
 #include "debrisflow/exec/parallel.hpp"
 #include "debrisflow/rigid/free_rotation_k.hpp"
 #include <algorithm>

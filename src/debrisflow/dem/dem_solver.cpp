@@ -3,6 +3,7 @@
 #include "debrisflow/core/stopwatch.hpp"
 #include "debrisflow/dem/critical_dt.hpp"
 #include "debrisflow/dem/grain_contact_k.hpp"
+#include "debrisflow/dem/grain_kick_drift_k.hpp"
 #include "debrisflow/dem/rolling_models_k.hpp"
 #include "debrisflow/exec/parallel.hpp"
 #include <algorithm>
@@ -180,43 +181,11 @@ void DemSolver::configure_grid() {
 void DemSolver::kick_drift(Real h) {
     ScopedTimer timer(t_integration_);
     GrainView g = grains_.view();
-    const Real half = Real(0.5) * h;
     const bool plane = params_.dim == 2;
     const Domain dom = domain_;
     GrainState* hot = hot_.data();
     const std::int32_t* clump_of = clump_of_id_.empty() ? nullptr : clump_of_id_.data();
-    const auto move_grain = [=](Index i, DriftReport& out) {
-        if (clump_of && clump_of[g.id[i]] >= 0) return; // moved with its clump below
-        // v_n+1/2 = v_n + (h/2) a_n drives the drift; the stored velocity is then the
-        // prediction v* = v_n+1/2 + (h/2) a_n, so that the dashpots see the velocity at the time
-        // of the positions (second-order damping); the final kick adds (h/2)(a_n+1 - a_n).
-        const Real im = g.inv_mass[i], ii = g.inv_inertia[i];
-        Vec3 dv = (half * im) * g.force[i];
-        Vec3 v = g.vel[i] + dv, w = g.spin[i] + (h * ii) * g.torque[i];
-        if (plane) dv.y = 0, v.y = 0, w.x = 0, w.z = 0;
-        const Real vel[3] = {v.x, v.y, v.z};
-        g.vel[i] = v + dv;
-        g.spin[i] = w;
-        Vec3 p = g.pos[i];
-        for (int d = 0; d < 3; ++d) {
-            Real x = p[d] + h * vel[d];
-            if (dom.periodic[d]) {
-                const Real len = dom.hi[d] - dom.lo[d];
-                if (x >= dom.hi[d]) x -= len;
-                if (x < dom.lo[d]) x += len;
-            } else if (!(plane && d == 1) && !(x >= dom.lo[d] && x <= dom.hi[d])) {
-                ++out.outside; // outside the domain, or NaN
-            }
-            p[d] = x;
-        }
-        g.pos[i] = p;
-        GrainState& hs = hot[i];
-        hs.x = p;
-        hs.v = g.vel[i];
-        hs.w = w;
-        const Real v2 = vel[0] * vel[0] + vel[1] * vel[1] + vel[2] * vel[2];
-        out.vmax2 = std::max(out.vmax2, v2);
-    };
+    const GrainKickDrift move_grain{g, hot, clump_of, h, plane, dom};
     const DriftReport moved = exec::reduce(g.n, DriftReport{}, move_grain, DriftReport::combine,
                                            exec::serial_below(parallel_min + 1));
     Real vmax2 = moved.vmax2;

@@ -122,14 +122,6 @@ private:
     // inside the 2 / w stability bound of velocity Verlet with room for several contacts).
     static constexpr Real stability_fraction = 0.2;
     // What a drift reports: the largest speed squared, and how many grains left the domain.
-    struct DriftReport {
-        Real vmax2 = 0;
-        int outside = 0;
-        static void combine(DriftReport& a, const DriftReport& b) {
-            a.vmax2 = std::max(a.vmax2, b.vmax2);
-            a.outside += b.outside;
-        }
-    };
     void rebuild();
     void configure_grid();
     // Copies positions, velocities, spins, radii, masses and materials into hot_.

@@ -2,12 +2,15 @@
 // kernel, so that every per-pair rule stays device-callable. No GPU is needed to compile this
 // file.
 #include "debrisflow/coupling/drag_laws_k.hpp"
+#include "debrisflow/dem/grain_kick_drift_k.hpp"
 #include "debrisflow/dem/grain_slot_contact_k.hpp"
 #include "debrisflow/kernels/cubic_spline_k.hpp"
 #include "debrisflow/kernels/wendland_c2_k.hpp"
 #include "debrisflow/models/density_diffusion_k.hpp"
 #include "debrisflow/models/viscosity_k.hpp"
+#include "debrisflow/neighbors/cell_keys_k.hpp"
 #include "debrisflow/sph/interaction_k.hpp"
+#include "debrisflow/sph/time_schemes_k.hpp"
 #include "debrisflow/sph/viscosity_registry.hpp"
 
 namespace debrisflow::cuda {
@@ -52,7 +55,37 @@ template <class Drag> struct GrainDrag {
     }
 };
 
+// A per-particle quantity that a loop reduces over (the stable step, the health check),
+// evaluated on the device into an array.
+template <class F> struct Evaluate {
+    F f;
+    decltype(f(Index(0)))* out;
+    DF_HD void operator()(Index i) const { out[i] = f(i); }
+};
+template <class F> void launch_evaluate() {
+    launch(0, Evaluate<F>{});
+}
+
+// A per-grain step that also folds a report (the DEM's kick and drift), each thread into its
+// own slot of `out` (a device reduction combines them).
+template <class F, class Report> struct Folded {
+    F f;
+    Report* out;
+    DF_HD void operator()(Index i) const { f(i, out[i]); }
+};
+
 void instantiate_all() {
+    launch(0, Folded<dem::GrainKickDrift, dem::DriftReport>{});
+    // the SPH phase's per-particle steps (sph/time_schemes_k.hpp) and the grid's sort keys
+    launch(0, neighbors::CellKeys{});
+    launch(0, sph::TaitPressure{});
+    launch(0, sph::TaitPressureArrays{});
+    launch(0, sph::SymplecticPredictor{});
+    launch(0, sph::SymplecticCorrector{});
+    launch(0, sph::VerletUpdate{});
+    launch_evaluate<sph::SignalSpeed>();
+    launch_evaluate<sph::AccelerationNorm>();
+    launch_evaluate<sph::ParticleHealthy>();
     launch(0, dem::GrainSlotContact{});
     launch(0, GrainDrag<coupling::DiFelice>{});
     launch(0, GrainDrag<coupling::SchillerNaumann>{});

@@ -1,6 +1,7 @@
 #include "debrisflow/neighbors/cell_grid.hpp"
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/exec/parallel.hpp"
+#include "debrisflow/neighbors/cell_keys_k.hpp"
 #include <cmath>
 #include <string>
 
@@ -52,16 +53,8 @@ void CellGrid::build(const Real* x, const Real* y, const Real* z, Index n, int s
                      const std::uint8_t* cls) {
     cell_of_.resize(n);
     order_.resize(n);
-    const GridView g = view_;
-    const int n0 = nc_[0], n1 = nc_[1];
     const int classes = cls ? 2 : 1;
-    Index* cell_of = cell_of_.data();
-    exec::for_each(n, [=](Index i) {
-        const std::size_t k = std::size_t(i) * std::size_t(stride);
-        const Index c =
-            g.cell_coord(x[k], 0) + n0 * (g.cell_coord(y[k], 1) + n1 * g.cell_coord(z[k], 2));
-        cell_of[i] = cls ? 2 * c + (cls[i] != 0) : c;
-    });
+    exec::for_each(n, CellKeys{view_, x, y, z, stride, cls, cell_of_.data()});
     // Counting sort on the key (cell, or cell and class): stable, so a cell lists its
     // particles in index order.
     const int nk = cell_count() * classes;

@@ -31,6 +31,11 @@ struct GridView {
         return c;
     }
 
+    // The sort key of a point: its cell, numbered x fastest.
+    DF_HD Index cell_of(Real x, Real y, Real z) const {
+        return cell_coord(x, 0) + nc[0] * (cell_coord(y, 1) + nc[1] * cell_coord(z, 2));
+    }
+
     // Separation xi - xj with periodic images folded in.
     DF_HD DF_HOT_INLINE Vec3 separation(Vec3 xi, Vec3 xj) const {
         Vec3 r = xi - xj;

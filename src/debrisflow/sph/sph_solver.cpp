@@ -5,6 +5,7 @@
 #include "debrisflow/sph/apparent_viscosity_k.hpp"
 #include "debrisflow/sph/interaction_k.hpp"
 #include "debrisflow/sph/sph_solver_gather.hpp"
+#include "debrisflow/sph/time_schemes_k.hpp"
 #include <cmath>
 #include <fmt/format.h>
 #include <numeric>
@@ -92,23 +93,15 @@ SphSolver::SpsConstants SphSolver::sps_constants() const {
 
 void SphSolver::update_pressure(bool arrays) {
     auto pv = set_.view();
-    const auto eos = eos_;
     if (!arrays) { // the gather computes p / rho^2, c and m / rho where it needs them
         for (auto* v : {&prho_, &cs_, &vol_}) std::vector<Real>().swap(*v);
-        exec::for_each(pv.n, [=](Index i) { pv.p[i] = eos.pressure(pv.rho[i]); });
+        exec::for_each(pv.n, TaitPressure{pv, eos_});
         return;
     }
     prho_.resize(std::size_t(pv.n));
     cs_.resize(std::size_t(pv.n));
     vol_.resize(std::size_t(pv.n));
-    Real *prho = prho_.data(), *cs = cs_.data(), *vol = vol_.data();
-    exec::for_each(pv.n, [=](Index i) {
-        const Real p = eos.pressure(pv.rho[i]);
-        pv.p[i] = p;
-        prho[i] = p / (pv.rho[i] * pv.rho[i]);
-        cs[i] = eos.sound_speed(pv.rho[i]);
-        vol[i] = pv.mass[i] / pv.rho[i];
-    });
+    exec::for_each(pv.n, TaitPressureArrays{pv, eos_, prho_.data(), cs_.data(), vol_.data()});
 }
 
 void SphSolver::update_viscosity(bool pairs) {
@@ -237,129 +230,35 @@ void SphSolver::compute_forces_gather() {
     with_gather([&](const auto& body) { exec::for_each(set_.size(), body); });
 }
 
-namespace {
-// Folds a coordinate back into a periodic direction.
-DF_HD inline Real wrap(Real v, Real lo, Real hi) {
-    const Real len = hi - lo;
-    if (v >= hi)
-        v -= len;
-    else if (v < lo)
-        v += len;
-    return v;
-}
-} // namespace
-
 Real SphSolver::boundary_min_density() const {
     return eos_.density(params_.boundary_min_pressure);
 }
 
-namespace {
-// A [[wall]]'s particles (group >= 0; a body's and an FEM surface's are -1 and moved by their
-// phases) translate with the wall's prescribed velocity: x = x_from + dt v, wrapped through
-// periodic sides. A fixed wall's particles (v = 0) stay where they are.
-DF_HD inline void translate_wall_particle(const particles::ParticleView& pv, Index i,
-                                          const Real (&from)[3], Real dt, const Domain& d) {
-    if (pv.group[i] < 0) return;
-    const Real v[3] = {pv.vx[i], pv.vy[i], pv.vz[i]};
-    if (v[0] == 0 && v[1] == 0 && v[2] == 0) return;
-    Real* xs[3] = {pv.x, pv.y, pv.z};
-    for (int k = 0; k < 3; ++k) {
-        const Real x = from[k] + dt * v[k];
-        xs[k][i] = d.periodic[k] ? wrap(x, d.lo[k], d.hi[k]) : x;
-    }
+StepStart SphSolver::step_start() {
+    return {x0_.data(),  y0_.data(),  z0_.data(),  vx0_.data(),
+            vy0_.data(), vz0_.data(), rho0_.data()};
 }
-} // namespace
 
 void SphSolver::predictor(Real dt) {
     ScopedTimer timer(t_integrate_);
     const Index n = set_.size();
     for (auto* v : {&x0_, &y0_, &z0_, &vx0_, &vy0_, &vz0_, &rho0_}) v->resize(n);
-    auto pv = set_.view();
-    Real *x0 = x0_.data(), *y0 = y0_.data(), *z0 = z0_.data();
-    Real *vx0 = vx0_.data(), *vy0 = vy0_.data(), *vz0 = vz0_.data(), *r0 = rho0_.data();
-    const Real hdt = Real(0.5) * dt, rho_ref = boundary_min_density();
-    const Domain d = domain_;
-    exec::for_each(n, [=](Index i) {
-        x0[i] = pv.x[i], y0[i] = pv.y[i], z0[i] = pv.z[i];
-        vx0[i] = pv.vx[i], vy0[i] = pv.vy[i], vz0[i] = pv.vz[i];
-        r0[i] = pv.rho[i];
-        pv.rho[i] += hdt * pv.drho[i];
-        if (!pv.is_fluid(i)) {
-            if (pv.rho[i] < rho_ref) pv.rho[i] = rho_ref; // DBC: never below rho0
-            translate_wall_particle(pv, i, {x0[i], y0[i], z0[i]}, hdt, d);
-            return;
-        }
-        Real* xs[3] = {pv.x, pv.y, pv.z};
-        const Real vs[3] = {pv.vx[i], pv.vy[i], pv.vz[i]};
-        for (int k = 0; k < 3; ++k) {
-            const Real v = xs[k][i] + hdt * vs[k];
-            xs[k][i] = d.periodic[k] ? wrap(v, d.lo[k], d.hi[k]) : v;
-        }
-        pv.vx[i] += hdt * pv.ax[i];
-        pv.vy[i] += hdt * pv.ay[i];
-        pv.vz[i] += hdt * pv.az[i];
-    });
+    exec::for_each(n, SymplecticPredictor{set_.view(), step_start(), Real(0.5) * dt,
+                                          boundary_min_density(), domain_});
 }
 
 void SphSolver::corrector(Real dt) {
     ScopedTimer timer(t_integrate_);
-    auto pv = set_.view();
-    const Real *x0 = x0_.data(), *y0 = y0_.data(), *z0 = z0_.data();
-    const Real *vx0 = vx0_.data(), *vy0 = vy0_.data(), *vz0 = vz0_.data(), *r0 = rho0_.data();
-    const Real rho_ref = boundary_min_density();
-    const Domain d = domain_;
-    exec::for_each(pv.n, [=](Index i) {
-        const Real eps = -dt * pv.drho[i] / pv.rho[i];
-        pv.rho[i] = r0[i] * (2 - eps) / (2 + eps);
-        if (!pv.is_fluid(i)) {
-            if (pv.rho[i] < rho_ref) pv.rho[i] = rho_ref;
-            translate_wall_particle(pv, i, {x0[i], y0[i], z0[i]}, dt, d);
-            return;
-        }
-        const Real vn[3] = {vx0[i], vy0[i], vz0[i]};
-        const Real xn[3] = {x0[i], y0[i], z0[i]};
-        Real* vs[3] = {pv.vx, pv.vy, pv.vz};
-        Real* xs[3] = {pv.x, pv.y, pv.z};
-        const Real as[3] = {pv.ax[i], pv.ay[i], pv.az[i]};
-        for (int k = 0; k < 3; ++k) {
-            const Real v1 = vn[k] + dt * as[k];
-            vs[k][i] = v1;
-            const Real x = xn[k] + Real(0.5) * dt * (vn[k] + v1);
-            xs[k][i] = d.periodic[k] ? wrap(x, d.lo[k], d.hi[k]) : x;
-        }
-    });
+    exec::for_each(set_.size(), SymplecticCorrector{set_.view(), step_start(), dt,
+                                                    boundary_min_density(), domain_});
 }
 
 void SphSolver::verlet_step(Real dt, bool euler) {
-    // Verlet (DualSPHysics, Dominguez et al. 2022 eqs. 17-19):
-    //   x_n+1 = x_n + dt v_n + dt^2/2 a_n,  v_n+1 = v_n-1 + 2 dt a_n,  rho_n+1 = rho_n-1 + 2 dt D_n
-    // and, every `euler` step, v_n+1 = v_n + dt a_n, rho_n+1 = rho_n + dt D_n.
     ScopedTimer timer(t_integrate_);
-    auto pv = set_.view();
-    Real *vxo = set_.vx_old.data(), *vyo = set_.vy_old.data(), *vzo = set_.vz_old.data();
-    Real* ro = set_.rho_old.data();
-    const Real rho_ref = boundary_min_density(), hdt2 = Real(0.5) * dt * dt;
-    const Domain d = domain_;
-    exec::for_each(pv.n, [=](Index i) {
-        const Real r_new = (euler ? pv.rho[i] : ro[i]) + (euler ? dt : 2 * dt) * pv.drho[i];
-        ro[i] = pv.rho[i];
-        pv.rho[i] = pv.is_fluid(i) || r_new >= rho_ref ? r_new : rho_ref;
-        if (!pv.is_fluid(i)) {
-            translate_wall_particle(pv, i, {pv.x[i], pv.y[i], pv.z[i]}, dt, d);
-            return;
-        }
-        Real* xs[3] = {pv.x, pv.y, pv.z};
-        Real* vs[3] = {pv.vx, pv.vy, pv.vz};
-        Real* vo[3] = {vxo, vyo, vzo};
-        const Real as[3] = {pv.ax[i], pv.ay[i], pv.az[i]};
-        for (int k = 0; k < 3; ++k) {
-            const Real v = vs[k][i];
-            const Real x = xs[k][i] + dt * v + hdt2 * as[k];
-            xs[k][i] = d.periodic[k] ? wrap(x, d.lo[k], d.hi[k]) : x;
-            vs[k][i] = (euler ? v : vo[k][i]) + (euler ? dt : 2 * dt) * as[k];
-            vo[k][i] = v;
-        }
-    });
+    const PreviousState old{set_.vx_old.data(), set_.vy_old.data(), set_.vz_old.data(),
+                            set_.rho_old.data()};
+    exec::for_each(set_.size(),
+                   VerletUpdate{set_.view(), old, dt, boundary_min_density(), euler, domain_});
 }
 
 std::size_t SphSolver::memory_bytes() const {

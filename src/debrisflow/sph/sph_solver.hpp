@@ -16,6 +16,8 @@ class Archive;
 
 namespace debrisflow::sph {
 
+struct StepStart;
+
 // The axis-aligned simulation box; particles leaving a non-periodic side stop the run.
 // Weakly-compressible SPH phase: DBC boundaries, Tait EOS, selectable kernel, viscosity and
 // density diffusion. Advanced by the Integrator's symplectic predictor-corrector.
@@ -97,6 +99,8 @@ private:
     // Updates pressures (and SPS stresses) and calls f(PairTerms<K, V, D>) for the case's models.
     template <class F> void with_pair_terms(F&& f, bool pairs);
     Real max_displacement() const;
+    // The symplectic scheme's saved state at t_n (x0_ ... rho0_).
+    StepStart step_start();
     SphParams params_;
     particles::ParticleSet& set_;
     Domain domain_;

@@ -3,6 +3,7 @@
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/exec/parallel.hpp"
 #include "debrisflow/sph/sph_solver.hpp"
+#include "debrisflow/sph/time_schemes_k.hpp"
 #include <cmath>
 #include <fmt/format.h>
 
@@ -12,16 +13,10 @@ using particles::Kind;
 
 time::DtLimit SphSolver::stable_dt() const {
     auto pv = const_cast<particles::ParticleSet&>(set_).view();
-    const auto eos = eos_;
-    const Real cmax = exec::max_of(pv.n, [=](Index i) {
-        if (!pv.is_fluid(i)) return Real(0);
-        return eos.sound_speed(pv.rho[i]) +
-               std::sqrt(pv.vx[i] * pv.vx[i] + pv.vy[i] * pv.vy[i] + pv.vz[i] * pv.vz[i]);
-    });
-    const Real amax = exec::max_of(pv.n, [=](Index i) {
-        if (!pv.is_fluid(i)) return Real(0);
-        return std::sqrt(pv.ax[i] * pv.ax[i] + pv.ay[i] * pv.ay[i] + pv.az[i] * pv.az[i]);
-    });
+    const SignalSpeed signal{pv, eos_};
+    const AccelerationNorm accel{pv};
+    const Real cmax = exec::max_of(pv.n, signal);
+    const Real amax = exec::max_of(pv.n, accel);
     const Real h = params_.h;
     time::DtLimit lim{params_.cfl * h / std::max(cmax, params_.c0), "cfl"};
     if (amax > 0) {
@@ -35,10 +30,7 @@ time::DtLimit SphSolver::stable_dt() const {
         const auto& s = set_;
         Index worst = -1;
         for (Index i = 0; i < s.size(); ++i) {
-            if (s.kind[i] != std::uint8_t(particles::Kind::fluid)) continue;
-            const Real v = std::sqrt(s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
-            const Real a = std::sqrt(s.ax[i] * s.ax[i] + s.ay[i] * s.ay[i] + s.az[i] * s.az[i]);
-            if ((cfl_low && eos.sound_speed(s.rho[i]) + v >= cmax) || (force_low && a >= amax)) {
+            if ((cfl_low && signal(i) >= cmax) || (force_low && accel(i) >= amax)) {
                 worst = i;
                 break;
             }
@@ -78,15 +70,9 @@ void SphSolver::check_health(Real t) const {
     const Domain d = domain_;
     const auto& s = set_;
     // the first bad particle (n: none)
+    const ParticleHealthy healthy{const_cast<particles::ParticleSet&>(s).view(), d};
     const auto first_bad = [&](Index i, Index& bad) {
-        const Real v[7] = {s.x[i], s.y[i], s.z[i], s.vx[i], s.vy[i], s.vz[i], s.rho[i]};
-        bool ok = true;
-        for (Real q : v) ok = ok && std::isfinite(q);
-        for (int k = 0; k < 3 && ok; ++k) {
-            const Real c = v[k];
-            if (!d.periodic[k] && (c < d.lo[k] || c > d.hi[k])) ok = false;
-        }
-        if (!ok && i < bad) bad = i;
+        if (!healthy(i) && i < bad) bad = i;
     };
     const Index bad = exec::reduce(n, n, first_bad, [](Index& b, Index v) { b = v < b ? v : b; });
     if (bad == n) return;
