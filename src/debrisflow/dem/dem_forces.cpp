@@ -13,6 +13,14 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
     const neighbors::GridView grid = grid_.view();
     const int nt = n > parallel_min ? exec::max_threads() : 1;
     balance_threads(nt);
+    const bool measure = measure_contact_force_; // |F| summed only for the settling ratio
+    // Only the evaluation that ends a step advances the tangential springs and hands impulses
+    // to bodies and FEM nodes; a re-evaluation of the same state (compute_forces) must not.
+    const bool ends_step = half_kick > 0;
+    const Real h_contact = ends_step ? current_h_ : 0;
+    // The device's layout fills acc_ before the per-grain pass; the host's pass in it, below.
+    const bool by_slot = params_.slot_contacts;
+    const SlotReport slot_report = by_slot ? slot_contacts(h_contact, measure) : SlotReport{};
     acc_.resize(6 * std::size_t(n));
     spills_.resize(std::size_t(nt));
     Real* acc = acc_.data();
@@ -22,11 +30,6 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
     const Index* gcount = grain_slots_.counts();
     Vec3* gxi = grain_slots_.tangential();
     Vec3* groll = grain_slots_.rolling();
-    const bool measure = measure_contact_force_; // |F| summed only for the settling ratio
-    // Only the evaluation that ends a step advances the tangential springs and hands impulses
-    // to bodies and FEM nodes; a re-evaluation of the same state (compute_forces) must not.
-    const bool ends_step = half_kick > 0;
-    const Real h_contact = ends_step ? current_h_ : 0;
     const GrainState* hot = hot_.data();
     // What the per-grain pass needs: walls, bodies, fluid loads.
     const auto& prims = walls_.primitives();
@@ -100,45 +103,48 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
         long touching = 0;
         Real fsum = 0;
         const Index lo = range[th], hi = range[th + 1];
-        std::fill(acc + 6 * std::size_t(lo), acc + 6 * std::size_t(hi), Real(0));
         std::vector<Spill>& spill = spills_[std::size_t(th)];
         spill.clear();
-        for (Index i = lo; i < hi; ++i) {
-            const std::size_t base = std::size_t(i) * std::size_t(gcap);
-            const GrainState si = hot[i];
-            Vec3 fi{}, ti{};
-            const Index ci = gcount[i];
-            for (Index k = 0; k < ci; ++k) {
-                const Index j = gp[base + std::size_t(k)];
-                const std::size_t sk = base + std::size_t(k);
-                const HistoryRef h{gxi + sk, groll ? groll + sk : nullptr};
-                GrainPairForce c;
-                if (!grain_slot_force(tab, grd, si, hot[j], h_c, h, c)) continue;
-                fi += c.force_i;
-                ti += c.torque_i;
-                if (j >= lo && j < hi) {
-                    Real* aj = acc + 6 * std::size_t(j);
-                    aj[0] -= c.force_i.x, aj[1] -= c.force_i.y, aj[2] -= c.force_i.z;
-                    aj[3] += c.torque_j.x, aj[4] += c.torque_j.y, aj[5] += c.torque_j.z;
-                } else {
-                    spill.push_back({j, -1 * c.force_i, c.torque_j});
+        // (1) and (2) are the host's pass; the device's layout (by_slot) filled acc_ already.
+        if (!by_slot) {
+            std::fill(acc + 6 * std::size_t(lo), acc + 6 * std::size_t(hi), Real(0));
+            for (Index i = lo; i < hi; ++i) {
+                const std::size_t base = std::size_t(i) * std::size_t(gcap);
+                const GrainState si = hot[i];
+                Vec3 fi{}, ti{};
+                const Index ci = gcount[i];
+                for (Index k = 0; k < ci; ++k) {
+                    const Index j = gp[base + std::size_t(k)];
+                    const std::size_t sk = base + std::size_t(k);
+                    const HistoryRef h{gxi + sk, groll ? groll + sk : nullptr};
+                    GrainPairForce c;
+                    if (!grain_slot_force(tab, grd, si, hot[j], h_c, h, c)) continue;
+                    fi += c.force_i;
+                    ti += c.torque_i;
+                    if (j >= lo && j < hi) {
+                        Real* aj = acc + 6 * std::size_t(j);
+                        aj[0] -= c.force_i.x, aj[1] -= c.force_i.y, aj[2] -= c.force_i.z;
+                        aj[3] += c.torque_j.x, aj[4] += c.torque_j.y, aj[5] += c.torque_j.z;
+                    } else {
+                        spill.push_back({j, -1 * c.force_i, c.torque_j});
+                    }
+                    if (measure) fsum += norm(c.force_i);
+                    ++touching;
                 }
-                if (measure) fsum += norm(c.force_i);
-                ++touching;
+                Real* ai = acc + 6 * std::size_t(i);
+                ai[0] += fi.x, ai[1] += fi.y, ai[2] += fi.z;
+                ai[3] += ti.x, ai[4] += ti.y, ai[5] += ti.z;
             }
-            Real* ai = acc + 6 * std::size_t(i);
-            ai[0] += fi.x, ai[1] += fi.y, ai[2] += fi.z;
-            ai[3] += ti.x, ai[4] += ti.y, ai[5] += ti.z;
-        }
-        if (nt > 1) {
-            team.barrier();
-            for (int u = 0; u < nt; ++u) {
-                if (u == th) continue;
-                for (const Spill& sp : spills_[std::size_t(u)]) {
-                    if (sp.j < lo || sp.j >= hi) continue;
-                    Real* aj = acc + 6 * std::size_t(sp.j);
-                    aj[0] += sp.force.x, aj[1] += sp.force.y, aj[2] += sp.force.z;
-                    aj[3] += sp.torque.x, aj[4] += sp.torque.y, aj[5] += sp.torque.z;
+            if (nt > 1) {
+                team.barrier();
+                for (int u = 0; u < nt; ++u) {
+                    if (u == th) continue;
+                    for (const Spill& sp : spills_[std::size_t(u)]) {
+                        if (sp.j < lo || sp.j >= hi) continue;
+                        Real* aj = acc + 6 * std::size_t(sp.j);
+                        aj[0] += sp.force.x, aj[1] += sp.force.y, aj[2] += sp.force.z;
+                        aj[3] += sp.torque.x, aj[4] += sp.torque.y, aj[5] += sp.torque.z;
+                    }
                 }
             }
         }
@@ -265,8 +271,8 @@ void DemSolver::forces(Real half_kick, bool collect_obstacles) {
         mine.force_sum = fsum;
     });
     // Walls' and bodies' sums in thread order (ranges ascend), so that a run repeats bitwise.
-    long touching = 0;
-    Real fsum = 0;
+    long touching = slot_report.touching;
+    Real fsum = slot_report.force_sum;
     for (std::size_t th = 0; th < std::size_t(nt); ++th) {
         const ThreadSums& ps = thread_sums_[th];
         for (std::size_t k = 0; k < ps.wall.size(); ++k) wall_sum_[k] += ps.wall[k];

@@ -14,6 +14,10 @@ struct DemParams {
     std::string rolling = "none"; // none | constant_torque | epsd
     bool subcycle = false;        // advance(dt) splits dt into stable sub-steps (with SPH)
     bool reorder = true;          // sort grains by cell at every neighbour rebuild
+    // grain-grain contacts: false, contiguous thread ranges with Newton's third law (the
+    // host's pass); true, one evaluation per candidate slot then a gather per grain (the
+    // device's layout, dem.contact_pass = "slots")
+    bool slot_contacts = false;
 };
 
 } // namespace debrisflow::dem

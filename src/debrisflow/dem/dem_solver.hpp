@@ -6,6 +6,7 @@
 #include "debrisflow/dem/grain_contact_k.hpp"
 #include "debrisflow/dem/grain_set.hpp"
 #include "debrisflow/dem/grain_slot_contact_k.hpp"
+#include "debrisflow/dem/grain_slot_pass_k.hpp"
 #include "debrisflow/dem/materials.hpp"
 #include "debrisflow/dem/obstacles.hpp"
 #include "debrisflow/dem/wall_set.hpp"
@@ -121,7 +122,6 @@ private:
     // Largest step accepted from the user: a fifth of the shortest contact time (about 0.6 / w,
     // inside the 2 / w stability bound of velocity Verlet with room for several contacts).
     static constexpr Real stability_fraction = 0.2;
-    // What a drift reports: the largest speed squared, and how many grains left the domain.
     void rebuild();
     void configure_grid();
     // Copies positions, velocities, spins, radii, masses and materials into hot_.
@@ -180,6 +180,15 @@ private:
     long ranges_balanced_ = -1;
     std::vector<Real> acc_;
     std::vector<std::vector<Spill>> spills_;
+    // dem.contact_pass = "slots" (the device's layout, dem_slot_pass.cpp): fills acc_ from one
+    // evaluation per candidate slot (slot_out_, 9 reals; slot_touching_) gathered per grain
+    // through the reverse index (the slots naming each grain as partner, rebuilt with the
+    // list); returns the touching contacts and their summed |F| (with `measure`).
+    SlotReport slot_contacts(Real h_contact, bool measure);
+    std::vector<Real> slot_out_;
+    std::vector<std::uint8_t> slot_touching_;
+    std::vector<Index> reverse_start_, reverse_;
+    long reverse_builds_ = -1;
     // What each thread of the per-grain pass sums, kept between steps (no allocation in a
     // step once the sizes are reached): wall and body loads (6 reals each), the contact loads
     // a pressure map reads, touching contacts and the summed |F| for the settling ratio.

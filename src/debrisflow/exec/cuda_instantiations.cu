@@ -4,6 +4,7 @@
 #include "debrisflow/coupling/drag_laws_k.hpp"
 #include "debrisflow/dem/grain_kick_drift_k.hpp"
 #include "debrisflow/dem/grain_slot_contact_k.hpp"
+#include "debrisflow/dem/grain_slot_pass_k.hpp"
 #include "debrisflow/kernels/cubic_spline_k.hpp"
 #include "debrisflow/kernels/wendland_c2_k.hpp"
 #include "debrisflow/models/density_diffusion_k.hpp"
@@ -76,6 +77,9 @@ template <class F, class Report> struct Folded {
 
 void instantiate_all() {
     launch(0, Folded<dem::GrainKickDrift, dem::DriftReport>{});
+    // the grain-grain contacts in the device's layout (dem.contact_pass = "slots")
+    launch(0, dem::GrainSlotForces{});
+    launch(0, Folded<dem::GrainSlotGather, dem::SlotReport>{});
     // the SPH phase's per-particle steps (sph/time_schemes_k.hpp) and the grid's sort keys
     launch(0, neighbors::CellKeys{});
     launch(0, sph::TaitPressure{});

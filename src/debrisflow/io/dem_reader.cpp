@@ -341,6 +341,7 @@ void read_dem(const ConfigTable& root, CaseSpec& c) {
     p.rolling = t->choice("rolling", dem::RollingRegistry::names(), "none");
     p.subcycle = t->boolean("subcycle", !c.fluids.empty());
     p.reorder = t->boolean("reorder", true);
+    p.slot_contacts = t->choice("contact_pass", {"ranges", "slots"}, "ranges") == "slots";
     c.dem.settle = t->boolean("settle", false);
     c.dem.settle_ratio = t->positive("settle_ratio", 0.01);
     c.dem.settle_max_time = t->positive("settle_max_time", 2);
