@@ -1,6 +1,8 @@
 #pragma once
 #include "debrisflow/core/real.hpp"
+#include <cstdint>
 #include <omp.h>
+#include <vector>
 
 namespace debrisflow::exec {
 
@@ -90,6 +92,44 @@ template <class F> Real max_of(Index n, const F& f, Loop loop = {}) {
 template <class T, class F> T sum_of(Index n, const F& f, Loop loop = {}) {
     return reduce(
         n, T(0), [&](Index i, T& s) { s += f(i); }, [](T& s, const T& v) { s += v; }, loop);
+}
+
+// out[i] = value(0) + ... + value(i - 1) for i in [0, n) (an exclusive prefix sum, the step
+// that turns per-item counts into positions: stream compaction, counting sorts); returns the
+// total. In two passes over contiguous blocks, one per thread: each block's sum, then each
+// block's prefix from the sums of the blocks before it. Integer sums repeat exactly.
+template <class T, class F> T exclusive_scan(Index n, const F& value, T* out, Loop loop = {}) {
+    const int nt = n < loop.serial_below ? 1 : omp_get_max_threads();
+    if (nt == 1) {
+        T sum = 0;
+        for (Index i = 0; i < n; ++i) {
+            out[i] = sum;
+            sum += value(i);
+        }
+        return sum;
+    }
+    T total = 0;
+    std::vector<T> block(std::size_t(nt) + 1, T(0));
+#pragma omp parallel num_threads(nt)
+    {
+        const int t = omp_get_thread_num(), m = omp_get_num_threads();
+        const Index lo = Index(std::int64_t(n) * t / m), hi = Index(std::int64_t(n) * (t + 1) / m);
+        T sum = 0;
+        for (Index i = lo; i < hi; ++i) sum += value(i);
+        block[std::size_t(t) + 1] = sum;
+#pragma omp barrier
+#pragma omp single
+        {
+            for (int b = 0; b < m; ++b) block[std::size_t(b) + 1] += block[std::size_t(b)];
+            total = block[std::size_t(m)];
+        }
+        T run = block[std::size_t(t)];
+        for (Index i = lo; i < hi; ++i) {
+            out[i] = run;
+            run += value(i);
+        }
+    }
+    return total;
 }
 
 // A team of threads running one body together: its thread number, its size, and a barrier

@@ -59,36 +59,49 @@ void ParticleSet::add(Vec3 pos, Vec3 vel, Real density, Real m, Kind k, std::int
 
 void ParticleSet::permute(const std::vector<Index>& perm) {
     ++layout_version_;
-    for_each_field(*this, [&](auto& field) {
+    const Index n = Index(perm.size());
+    const Index* from = perm.data();
+    const auto gather = [&](auto& field, std::size_t width) {
         using V = std::decay_t<decltype(field)>;
         if (field.empty()) return; // the Verlet state of a symplectic run
         V out(field.size());
-        const Index n = Index(perm.size());
-        exec::for_each(n, [&](Index i) { out[i] = field[perm[i]]; });
+        auto* o = out.data();
+        const auto* f = field.data();
+        exec::for_each(n, [=](Index i) {
+            for (std::size_t c = 0; c < width; ++c)
+                o[width * std::size_t(i) + c] = f[width * std::size_t(from[i]) + c];
+        });
         field.swap(out);
-    });
-    if (sps_tau.empty()) return;
-    std::vector<Real> tau(sps_tau.size());
-    for (std::size_t i = 0; i < perm.size(); ++i)
-        for (std::size_t k = 0; k < sps_width; ++k)
-            tau[sps_width * i + k] = sps_tau[sps_width * std::size_t(perm[i]) + k];
-    sps_tau.swap(tau);
+    };
+    for_each_field(*this, [&](auto& field) { gather(field, 1); });
+    gather(sps_tau, sps_width);
 }
 
 void ParticleSet::compact(const std::vector<std::uint8_t>& keep) {
     ++layout_version_;
-    for_each_field(*this, [&](auto& field) {
-        std::size_t w = 0;
-        for (std::size_t i = 0; i < field.size(); ++i)
-            if (keep[i]) field[w++] = field[i];
-        field.resize(w);
-    });
-    if (sps_tau.empty()) return;
-    std::size_t w = 0;
-    for (std::size_t i = 0; i < keep.size(); ++i)
-        if (keep[i])
-            for (std::size_t k = 0; k < sps_width; ++k) sps_tau[w++] = sps_tau[sps_width * i + k];
-    sps_tau.resize(w);
+    // Stream compaction: each kept particle's new index is the number kept before it (an
+    // exclusive scan), then every array is gathered into its new place in parallel.
+    const Index n = Index(keep.size());
+    const std::uint8_t* k = keep.data();
+    std::vector<Index> to(keep.size());
+    Index* dest = to.data();
+    const Index kept = exec::exclusive_scan(
+        n, [=](Index i) { return Index(k[i] != 0); }, dest);
+    const auto scatter = [&](auto& field, std::size_t width) {
+        using V = std::decay_t<decltype(field)>;
+        if (field.empty()) return; // the Verlet state of a symplectic run
+        V out(std::size_t(kept) * width);
+        auto* o = out.data();
+        const auto* f = field.data();
+        exec::for_each(n, [=](Index i) {
+            if (!k[i]) return;
+            for (std::size_t c = 0; c < width; ++c)
+                o[width * std::size_t(dest[i]) + c] = f[width * std::size_t(i) + c];
+        });
+        field.swap(out);
+    };
+    for_each_field(*this, [&](auto& field) { scatter(field, 1); });
+    scatter(sps_tau, sps_width);
 }
 
 void ParticleSet::set_wall(Index i, Vec3 normal, Real depth) {
