@@ -129,7 +129,7 @@ probes::Probe& Simulation::probe(const std::string& name) {
 }
 
 std::size_t Simulation::memory_bytes() const {
-    const double grains = double(grains_.size()) * scenario::bytes_per_grain();
+    const double grains = double(grains_.size()) * scenario::bytes_per_grain(spec_);
     if (!solver_) return std::size_t(grains);
     const double particle =
         scenario::sph_bytes_per_particle(spec_.dim, solver_->support() / spec_.dp);

@@ -103,9 +103,12 @@ double sph_bytes_per_particle(int dim, double support_over_dp) {
            4 * sizeof(Real) * 2;
 }
 
-double bytes_per_grain() {
-    // 19 Real + material + id, and about 12 contact slots (index, key, 6-Real history).
-    return 19 * sizeof(Real) + 5 + 12 * (8 + 6 * sizeof(Real)) + 6 * sizeof(Real);
+double bytes_per_grain(const io::CaseSpec& c) {
+    // 19 Real + material + id, and about 12 contact slots (index, key, 6-Real history); the
+    // device's contact layout (dem.contact_pass = "slots") adds per slot its 9-Real result,
+    // a flag and a reverse-index entry.
+    const double slot_pass = c.dem.params.slot_contacts ? 12 * (9 * sizeof(Real) + 1 + 4) : 0;
+    return 19 * sizeof(Real) + 5 + 12 * (8 + 6 * sizeof(Real)) + 6 * sizeof(Real) + slot_pass;
 }
 
 double ResourceEstimate::total_bytes() const {
@@ -215,12 +218,12 @@ ResourceEstimate estimate_resources(const io::CaseSpec& c) {
         // a clump (size: its volume-equivalent diameter) is as many grains as it has spheres;
         // on a lattice it takes at least its diameter (an upper bound on the count)
         const double members = g.clump_radii.empty() ? 1 : double(g.clump_radii.size());
-        add("grains '" + g.name + "'", g.origin.at(key), n * members, bytes_per_grain());
+        add("grains '" + g.name + "'", g.origin.at(key), n * members, bytes_per_grain(c));
     }
     for (const auto& f : c.dem.feeds) {
         const double d = median_diameter(f.size);
         add("grains released by feed '" + f.name + "' by the end time", f.origin.at("discharge"),
-            delivered(f.times, f.discharge, c.t_end) / grain_volume(d, c), bytes_per_grain());
+            delivered(f.times, f.discharge, c.t_end) / grain_volume(d, c), bytes_per_grain(c));
     }
     for (const auto& s : c.fem.solids) {
         if (s.mesh == "gmsh") continue;

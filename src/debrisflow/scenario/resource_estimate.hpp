@@ -27,10 +27,11 @@ ResourceEstimate estimate_resources(const io::CaseSpec& c);
 void require_within_budget(const ResourceEstimate& e);
 
 // Bytes of one SPH particle (fields, reorder and integrator copies, grid, half pair list) and
-// of one grain (state and about 12 contact slots with history); Simulation::memory_bytes uses
+// of one grain (state and about 12 contact slots with history, and with the device contact
+// layout their results); Simulation::memory_bytes uses
 // the same figures.
 double sph_bytes_per_particle(int dim, double support_over_dp);
-double bytes_per_grain();
+double bytes_per_grain(const io::CaseSpec& c);
 
 // Guard of every lattice built from input sizes: throws InputError naming `what` when the
 // lattice of spacing dp over [lo, hi] has more points than the budget allows.
