@@ -10,6 +10,7 @@
 #include "debrisflow/models/density_diffusion_k.hpp"
 #include "debrisflow/models/viscosity_k.hpp"
 #include "debrisflow/neighbors/cell_keys_k.hpp"
+#include "debrisflow/probes/fluid_samples_k.hpp"
 #include "debrisflow/sph/interaction_k.hpp"
 #include "debrisflow/sph/time_schemes_k.hpp"
 #include "debrisflow/sph/viscosity_registry.hpp"
@@ -37,7 +38,17 @@ template <class K, class... V> void instantiate_viscosities(models::Registry<V..
     (instantiate_interaction<K, V, models::Fourtakas>(), ...);
 }
 
+// A probe's point sample evaluated on the device, one point per thread.
+template <class F, class T> struct AtPoints {
+    F f;
+    const Vec3* points;
+    T* out;
+    DF_HD void operator()(Index i) const { out[i] = f(points[i]); }
+};
+
 template <class K> void instantiate_kernel() {
+    launch(0, AtPoints<probes::ShepardSample<K>, probes::PointSample>{});
+    launch(0, AtPoints<probes::FilledFraction<K>, Real>{});
     instantiate_viscosities<K>(static_cast<sph::ViscosityRegistry*>(nullptr));
     instantiate_interaction<K, models::ArtificialViscosity, models::NoDiffusion>();
     instantiate_interaction<K, models::ArtificialViscosity, models::MolteniColagrossi>();
@@ -90,6 +101,9 @@ void instantiate_all() {
     launch_evaluate<sph::SignalSpeed>();
     launch_evaluate<sph::AccelerationNorm>();
     launch_evaluate<sph::ParticleHealthy>();
+    // what the SPH probes reduce over (probes/fluid_samples_k.hpp)
+    launch_evaluate<probes::FrontCoordinate>();
+    launch_evaluate<probes::WallParticleLoad>();
     launch(0, dem::GrainSlotContact{});
     launch(0, GrainDrag<coupling::DiFelice>{});
     launch(0, GrainDrag<coupling::SchillerNaumann>{});

@@ -41,28 +41,13 @@ std::unique_ptr<Probe> FrontProbe::from_config(const ProbeSetup& s) {
 }
 
 PointSample interpolate(const sph::SphSolver& solver, Vec3 x) {
-    const auto& s = solver.particles();
-    const auto grid = solver.grid().view();
-    PointSample out;
-    std::visit(
+    auto pv = const_cast<sph::SphSolver&>(solver).particles().view();
+    return std::visit(
         [&](const auto& kernel) {
-            grid.for_each_neighbor(
-                -1, x, s.x.data(), s.y.data(), s.z.data(), [&](Index j, Vec3, Real r2) {
-                    if (s.kind[j] != std::uint8_t(particles::Kind::fluid)) return;
-                    const Real w = kernel.w(std::sqrt(r2)) * s.mass[j] / s.rho[j];
-                    out.weight += w;
-                    out.p += w * s.p[j];
-                    out.rho += w * s.rho[j];
-                    out.v += w * Vec3{s.vx[j], s.vy[j], s.vz[j]};
-                });
+            using K = std::decay_t<decltype(kernel)>;
+            return ShepardSample<K>{pv, solver.grid().view(), kernel}(x);
         },
         solver.models().kernel);
-    if (out.weight > 0) {
-        out.p /= out.weight;
-        out.rho /= out.weight;
-        out.v = (1 / out.weight) * out.v;
-    }
-    return out;
 }
 
 std::vector<Real> PressureProbe::sample_fluid(const sph::SphSolver& solver) const {
@@ -74,22 +59,17 @@ std::vector<Real> VelocityProbe::sample_fluid(const sph::SphSolver& solver) cons
     return {s.v.x, s.v.y, s.v.z, norm(s.v)};
 }
 
-// Kernel sum of the volume of fluid and boundary particles at x: 1 inside water or a solid,
-// 1/2 on their surface. Solids count as filled, so that a film on the bed raises the reading
-// from the bed's elevation by its thickness instead of staying dry until it is a kernel deep.
+// Kernel sum of the volume of fluid and boundary particles at x (FilledFraction): solids count
+// as filled, so that a film on the bed raises the reading from the bed's elevation by its
+// thickness instead of staying dry until it is a kernel deep.
 Real filled_fraction(const sph::SphSolver& solver, Vec3 x) {
-    const auto& s = solver.particles();
-    const auto grid = solver.grid().view();
-    Real sum = 0;
-    std::visit(
+    auto pv = const_cast<sph::SphSolver&>(solver).particles().view();
+    return std::visit(
         [&](const auto& kernel) {
-            grid.for_each_neighbor(-1, x, s.x.data(), s.y.data(), s.z.data(),
-                                   [&](Index j, Vec3, Real r2) {
-                                       sum += kernel.w(std::sqrt(r2)) * s.mass[j] / s.rho[j];
-                                   });
+            using K = std::decay_t<decltype(kernel)>;
+            return FilledFraction<K>{pv, solver.grid().view(), kernel}(x);
         },
         solver.models().kernel);
-    return sum;
 }
 
 std::vector<Real> GaugeProbe::sample_fluid(const sph::SphSolver& solver) const {
@@ -111,20 +91,19 @@ std::vector<Real> GaugeProbe::sample_fluid(const sph::SphSolver& solver) const {
 }
 
 std::vector<Real> FrontProbe::sample_fluid(const sph::SphSolver& solver) const {
-    const auto& s = solver.particles();
-    const std::vector<Real>& c = axis_ == 0 ? s.x : (axis_ == 1 ? s.y : s.z);
-    Real m = -std::numeric_limits<Real>::max(); // the largest of sign * coordinate
-    for (Index i = 0; i < s.size(); ++i)
-        if (s.kind[i] == std::uint8_t(particles::Kind::fluid)) m = std::max(m, sign_ * c[i]);
+    auto pv = const_cast<sph::SphSolver&>(solver).particles().view();
+    const Real lowest = -std::numeric_limits<Real>::max();
+    const FrontCoordinate coordinate{pv, axis_, sign_, lowest};
+    Real m = lowest; // the largest of sign * coordinate
+    for (Index i = 0; i < pv.n; ++i) m = std::max(m, coordinate(i));
     return {sign_ * m};
 }
 
 Vec3 fluid_wall_force(const sph::SphSolver& solver, int group) {
-    const auto& s = solver.particles();
+    const WallParticleLoad load{const_cast<sph::SphSolver&>(solver).particles().view(), group};
     Vec3 f;
-    for (Index i = 0; i < s.size(); ++i)
-        if (s.kind[i] == std::uint8_t(particles::Kind::boundary) && s.group[i] == group)
-            f += s.mass[i] * Vec3{s.ax[i], s.ay[i], s.az[i]};
+    for (Index i = 0; i < load.pv.n; ++i)
+        if (!load.pv.is_fluid(i) && load.pv.group[i] == group) f += load(i);
     return f;
 }
 

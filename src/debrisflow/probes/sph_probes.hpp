@@ -1,15 +1,10 @@
 #pragma once
+#include "debrisflow/probes/fluid_samples_k.hpp"
 #include "debrisflow/probes/probe.hpp"
 
 namespace debrisflow::probes {
 
-// Shepard-normalised kernel interpolation of fluid fields at a point:
-// f(x) = sum_j f_j W(x - x_j) m_j/rho_j / sum_j W(x - x_j) m_j/rho_j (fluid particles only).
-struct PointSample {
-    Real weight = 0; // sum_j W m_j / rho_j (1 inside the fluid, ~0.5 at the free surface)
-    Real p = 0, rho = 0;
-    Vec3 v;
-};
+// Shepard-normalised fluid fields at x (ShepardSample, fluid_samples_k.hpp).
 PointSample interpolate(const sph::SphSolver& solver, Vec3 x);
 
 // Total force of the fluid on the boundary particles of wall `group`: sum of m_i a_i.

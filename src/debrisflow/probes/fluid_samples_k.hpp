@@ -1,0 +1,86 @@
+#pragma once
+// What the SPH probes read of the particles, written once for the host (probes/sph_probes.cpp)
+// and a device, where a probe evaluated beside the particle arrays brings back its few numbers
+// instead of the arrays (exec/cuda_instantiations.cu compiles these with nvcc).
+#include "debrisflow/neighbors/grid_view_k.hpp"
+#include "debrisflow/particles/particle_set.hpp"
+#include <cmath>
+#include <type_traits>
+
+namespace debrisflow::probes {
+
+// Shepard-normalised kernel interpolation of fluid fields at a point:
+// f(x) = sum_j f_j W(x - x_j) m_j/rho_j / sum_j W(x - x_j) m_j/rho_j (fluid particles only).
+struct PointSample {
+    Real weight = 0; // sum_j W m_j / rho_j (1 inside the fluid, ~0.5 at the free surface)
+    Real p = 0, rho = 0;
+    Vec3 v;
+};
+
+template <class Kernel> struct ShepardSample {
+    particles::ParticleView pv;
+    neighbors::GridView grid;
+    Kernel kernel;
+    DF_HD PointSample operator()(Vec3 x) const {
+        PointSample out;
+        grid.for_each_neighbor(-1, x, pv.x, pv.y, pv.z, [&](Index j, Vec3, Real r2) {
+            if (!pv.is_fluid(j)) return;
+            const Real w = kernel.w(std::sqrt(r2)) * pv.mass[j] / pv.rho[j];
+            out.weight += w;
+            out.p += w * pv.p[j];
+            out.rho += w * pv.rho[j];
+            out.v += w * pv.vel(j);
+        });
+        if (out.weight > 0) {
+            out.p /= out.weight;
+            out.rho /= out.weight;
+            out.v = (1 / out.weight) * out.v;
+        }
+        return out;
+    }
+};
+
+// Kernel sum of the volume of fluid and boundary particles at x, sum_j W(x - x_j) m_j / rho_j:
+// 1 inside water or a solid, 1/2 on their surface (the gauge's filled fraction).
+template <class Kernel> struct FilledFraction {
+    particles::ParticleView pv;
+    neighbors::GridView grid;
+    Kernel kernel;
+    DF_HD Real operator()(Vec3 x) const {
+        Real sum = 0;
+        grid.for_each_neighbor(-1, x, pv.x, pv.y, pv.z, [&](Index j, Vec3, Real r2) {
+            sum += kernel.w(std::sqrt(r2)) * pv.mass[j] / pv.rho[j];
+        });
+        return sum;
+    }
+};
+
+// Coordinate `axis` of particle i times `sign` for a fluid particle, -max otherwise: the
+// front probe's maximum over the particles.
+struct FrontCoordinate {
+    particles::ParticleView pv;
+    int axis;
+    Real sign;
+    Real lowest; // what a particle that is not fluid gives
+    DF_HD Real operator()(Index i) const {
+        if (!pv.is_fluid(i)) return lowest;
+        const Real* c = axis == 0 ? pv.x : (axis == 1 ? pv.y : pv.z);
+        return sign * c[i];
+    }
+};
+
+// The force of the fluid on boundary particle i of wall `group`, m_i a_i (zero for others):
+// a wall's fluid load is the sum over its particles.
+struct WallParticleLoad {
+    particles::ParticleView pv;
+    int group;
+    DF_HD Vec3 operator()(Index i) const {
+        if (pv.is_fluid(i) || pv.group[i] != group) return {};
+        return pv.mass[i] * Vec3{pv.ax[i], pv.ay[i], pv.az[i]};
+    }
+};
+
+static_assert(std::is_trivially_copyable_v<FrontCoordinate>);
+static_assert(std::is_trivially_copyable_v<WallParticleLoad>);
+
+} // namespace debrisflow::probes
