@@ -6,6 +6,7 @@
 // The two passes add the same contact forces in another order, so they differ by round-off
 // from the first step; the bound on each comparison is that round-off after the steps run,
 // measured below (the largest differences seen, times about thirty).
+#include "probe_difference.hpp"
 #include "run_case.hpp"
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -24,7 +25,7 @@ struct State {
     std::map<std::uint32_t, GrainRecord> grains;
     // tangential spring of each contact slot, by the pair's persistent ids
     std::map<std::pair<std::uint32_t, std::uint32_t>, Vec3> springs;
-    std::vector<std::vector<std::vector<Real>>> probes;
+    test::ProbeHistories probes;
     long steps = 0, contacts = 0;
 };
 
@@ -87,24 +88,7 @@ Diff compare(const State& a, const State& b, double d) {
         out.spring = std::max(out.spring, double(norm(xi - spring_of(b, key))) / smax);
     for (const auto& [key, xi] : b.springs)
         out.spring = std::max(out.spring, double(norm(xi - spring_of(a, key))) / smax);
-    for (std::size_t k = 0; k < a.probes.size(); ++k) {
-        const auto &ha = a.probes[k], &hb = b.probes[k];
-        if (ha.empty()) continue;
-        // a column that stays at round-off level is judged against a thousandth of the
-        // probe's largest value instead of its own
-        double floor = 0;
-        for (const auto& row : ha)
-            for (std::size_t c = 1; c < row.size(); ++c)
-                floor = std::max(floor, 1e-3 * std::abs(double(row[c])));
-        for (std::size_t c = 1; c < ha[0].size(); ++c) {
-            double scale = floor, m = 0;
-            for (std::size_t r = 0; r < ha.size(); ++r) {
-                scale = std::max(scale, std::abs(double(ha[r][c])));
-                m = std::max(m, std::abs(double(ha[r][c] - hb[r][c])));
-            }
-            if (scale > 0) out.probe = std::max(out.probe, m / scale);
-        }
-    }
+    out.probe = test::probe_difference(a.probes, b.probes);
     return out;
 }
 

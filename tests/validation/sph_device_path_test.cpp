@@ -5,6 +5,7 @@
 // The two loops sum the same terms in another order, so they differ by round-off from the
 // first step; the bound on each comparison is that round-off after the number of steps run,
 // measured below (the largest differences seen, times ten).
+#include "probe_difference.hpp"
 #include "run_case.hpp"
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -16,7 +17,7 @@ namespace {
 
 struct State {
     std::map<ParticleId, std::array<double, 7>> fluid; // x, y, z, vx, vy, vz, rho
-    std::vector<std::vector<std::vector<Real>>> probes;
+    test::ProbeHistories probes;
     std::vector<std::array<double, 6>> bodies; // centre and velocity
     long steps = 0;
     Index fluid_count = 0;
@@ -59,24 +60,7 @@ Diff compare(const State& a, const State& b, double dp, double rho0) {
         d.v = std::max(d.v, std::hypot(s[3] - t[3], s[4] - t[4], s[5] - t[5]) / vmax);
         d.rho = std::max(d.rho, std::abs(s[6] - t[6]) / rho0);
     }
-    for (std::size_t k = 0; k < a.probes.size(); ++k) {
-        const auto &ha = a.probes[k], &hb = b.probes[k];
-        if (ha.empty()) continue;
-        // A column that stays at round-off level (the sideways force on a symmetric body) is
-        // judged against a thousandth of the probe's largest value instead of its own.
-        double floor = 0;
-        for (const auto& row : ha)
-            for (std::size_t c = 1; c < row.size(); ++c)
-                floor = std::max(floor, 1e-3 * std::abs(double(row[c])));
-        for (std::size_t c = 1; c < ha[0].size(); ++c) {
-            double scale = floor, m = 0;
-            for (std::size_t r = 0; r < ha.size(); ++r) {
-                scale = std::max(scale, std::abs(double(ha[r][c])));
-                m = std::max(m, std::abs(double(ha[r][c] - hb[r][c])));
-            }
-            if (scale > 0) d.probe = std::max(d.probe, m / scale);
-        }
-    }
+    d.probe = test::probe_difference(a.probes, b.probes);
     for (std::size_t k = 0; k < a.bodies.size(); ++k)
         for (int c = 0; c < 3; ++c)
             d.body = std::max(d.body, std::abs(a.bodies[k][c] - b.bodies[k][c]) / dp);
