@@ -29,16 +29,7 @@ SlotReport DemSolver::slot_contacts(Real h_contact, bool measure) {
     }
     slot_out_.resize(9 * slots);
     slot_touching_.resize(slots);
-    const GrainContactInputs in{hot_.data(),
-                                n,
-                                partner,
-                                count,
-                                grain_slots_.tangential(),
-                                grain_slots_.rolling(),
-                                cap,
-                                pair_table(),
-                                grid_.view(),
-                                h_contact};
+    const GrainContactInputs in = contact_inputs(h_contact);
     const exec::Loop loop = exec::serial_below(parallel_min + 1);
     exec::for_each(Index(slots), GrainSlotForces{in, slot_out_.data(), slot_touching_.data()},
                    loop);

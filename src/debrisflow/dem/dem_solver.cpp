@@ -49,6 +49,10 @@ Real DemSolver::drag_dt() const {
 
 GrainContactInputs DemSolver::grain_contact_inputs() {
     refresh_hot();
+    return contact_inputs(current_h_);
+}
+
+GrainContactInputs DemSolver::contact_inputs(Real h) {
     return {hot_.data(),
             grains_.size(),
             grain_slots_.partners(),
@@ -58,7 +62,7 @@ GrainContactInputs DemSolver::grain_contact_inputs() {
             grain_slots_.capacity(),
             pair_table(),
             grid_.view(),
-            current_h_};
+            h};
 }
 
 void DemSolver::update_neighbors(bool) {

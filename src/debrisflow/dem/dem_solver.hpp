@@ -185,6 +185,9 @@ private:
     // through the reverse index (the slots naming each grain as partner, rebuilt with the
     // list); returns the touching contacts and their summed |F| (with `measure`).
     SlotReport slot_contacts(Real h_contact, bool measure);
+    // What the contact functors read, as the grain state stands (hot_ current), with spring
+    // increment h.
+    GrainContactInputs contact_inputs(Real h);
     std::vector<Real> slot_out_;
     std::vector<std::uint8_t> slot_touching_;
     std::vector<Index> reverse_start_, reverse_;

@@ -74,8 +74,9 @@ struct FrontCoordinate {
 struct WallParticleLoad {
     particles::ParticleView pv;
     int group;
+    DF_HD bool on_wall(Index i) const { return !pv.is_fluid(i) && pv.group[i] == group; }
     DF_HD Vec3 operator()(Index i) const {
-        if (pv.is_fluid(i) || pv.group[i] != group) return {};
+        if (!on_wall(i)) return {};
         return pv.mass[i] * Vec3{pv.ax[i], pv.ay[i], pv.az[i]};
     }
 };

@@ -103,7 +103,7 @@ Vec3 fluid_wall_force(const sph::SphSolver& solver, int group) {
     const WallParticleLoad load{const_cast<sph::SphSolver&>(solver).particles().view(), group};
     Vec3 f;
     for (Index i = 0; i < load.pv.n; ++i)
-        if (!load.pv.is_fluid(i) && load.pv.group[i] == group) f += load(i);
+        if (load.on_wall(i)) f += load(i); // the wall's particles, in index order
     return f;
 }
 
