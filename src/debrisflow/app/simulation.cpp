@@ -38,6 +38,9 @@ Simulation::Simulation(io::CaseSpec spec)
             sph_fem_->connect();
         }
         solver_ = std::make_unique<sph::SphSolver>(spec_.sph, set_, spec_.domain);
+        if (spec_.backend != "host")
+            resident_ =
+                sph::make_resident_sph(spec_.backend, *solver_, spec_.exec_origin.at("backend"));
     }
     if (spec_.has_dem || spec_.has_bodies()) {
         scenario::build_dem_walls(spec_, dem_walls_);
@@ -188,8 +191,9 @@ RunReport Simulation::run(const RunOptions& opt) {
 
     time::Integrator integ;
     // in the order coupling/step_order.cpp states
-    for (time::Phase* p : coupling::force_order(
-             {solver_.get(), dem_.get(), sph_dem_.get(), rigid_.get(), fem_.get()}))
+    time::Phase* sph_phase = resident_ ? static_cast<time::Phase*>(resident_.get()) : solver_.get();
+    for (time::Phase* p :
+         coupling::force_order({sph_phase, dem_.get(), sph_dem_.get(), rigid_.get(), fem_.get()}))
         integ.add_phase(p);
     integ.set_reorder_every(solver_ ? spec_.sph.reorder_every : 1);
     // Cases without fluid take one force evaluation per step (velocity Verlet in the DEM and
@@ -207,7 +211,11 @@ RunReport Simulation::run(const RunOptions& opt) {
         const Real at = *spec_.walls[w].remove_at;
         integ.add_hook(time::Hook::step_begin, [this, w, at](const time::StepInfo& s) {
             if (wall_removed_[w] || s.t < at) return;
-            if (solver_) solver_->remove_group(std::int16_t(w));
+            if (solver_) {
+                if (resident_) resident_->publish();
+                solver_->remove_group(std::int16_t(w));
+                if (resident_) resident_->reload();
+            }
             if (dem_) dem_->remove_wall(int(w));
             if (!dem_ && rigid_) dem_walls_.walls()[w].active = false;
             wall_removed_[w] = 1;
@@ -246,7 +254,13 @@ RunReport Simulation::run(const RunOptions& opt) {
     // outlets and before the neighbour search and the health checks.
     if (domain_exit_.removes())
         integ.add_hook(time::Hook::after_integration, [this](const time::StepInfo& s) {
+            // a resident phase is copied back only when a particle has left
+            if (resident_) {
+                if (!resident_->any_unhealthy()) return;
+                resident_->publish();
+            }
             const std::string note = domain_exit_.apply(solver_.get(), dem_.get(), s.t);
+            if (resident_) resident_->reload();
             if (!note.empty()) log_.line(note);
         });
     for (auto& p : probes_) {
@@ -273,27 +287,33 @@ RunReport Simulation::run(const RunOptions& opt) {
             frames, [this, &vtk_fem](const time::StepInfo& s) { vtk_fem->write(*fem_, s.t); });
     // Particle-steps counted step by step: inlets, feeds and outlets change the count.
     double particle_steps = 0;
-    integ.add_observer(time::Schedule::every_steps(1), [&](const time::StepInfo& s) {
-        if (s.step > 0)
-            particle_steps += double(set_.size() + grains_.size() + (fem_ ? fem_->nodes() : 0));
-    });
+    integ.add_observer(
+        time::Schedule::every_steps(1),
+        [&](const time::StepInfo& s) {
+            if (s.step > 0)
+                particle_steps += double(set_.size() + grains_.size() + (fem_ ? fem_->nodes() : 0));
+        },
+        false);
     const auto wall0 = std::chrono::steady_clock::now();
     auto last_report = wall0;
-    integ.add_observer(time::Schedule::every_steps(1), [&](const time::StepInfo& s) {
-        const auto now = std::chrono::steady_clock::now();
-        if (!s.last &&
-            std::chrono::duration<double>(now - last_report).count() < spec_.progress_seconds)
-            return;
-        last_report = now;
-        const double wall = std::chrono::duration<double>(now - wall0).count();
-        const double pss = wall > 0 ? particle_steps / wall : 0;
-        const double eta = s.t > 0 ? wall * (spec_.t_end - s.t) / s.t : 0;
-        log_.line(fmt::format("t = {:.5f} s  step {}  dt = {:.3e} s ({})  {:.3g} "
-                              "particle-steps/s  wall {:.1f} s  ETA {:.0f} s{}",
-                              s.t, s.step, s.dt, s.limiter, pss, wall, eta,
-                              dem_ ? fmt::format("  contacts {}", dem_->contacts()) : ""));
-        for (auto& p : probes_) p->flush();
-    });
+    integ.add_observer(
+        time::Schedule::every_steps(1),
+        [&](const time::StepInfo& s) {
+            const auto now = std::chrono::steady_clock::now();
+            if (!s.last &&
+                std::chrono::duration<double>(now - last_report).count() < spec_.progress_seconds)
+                return;
+            last_report = now;
+            const double wall = std::chrono::duration<double>(now - wall0).count();
+            const double pss = wall > 0 ? particle_steps / wall : 0;
+            const double eta = s.t > 0 ? wall * (spec_.t_end - s.t) / s.t : 0;
+            log_.line(fmt::format("t = {:.5f} s  step {}  dt = {:.3e} s ({})  {:.3g} "
+                                  "particle-steps/s  wall {:.1f} s  ETA {:.0f} s{}",
+                                  s.t, s.step, s.dt, s.limiter, pss, wall, eta,
+                                  dem_ ? fmt::format("  contacts {}", dem_->contacts()) : ""));
+            for (auto& p : probes_) p->flush();
+        },
+        false);
     // Checkpoints, after the observers have seen the step: every checkpoint_every simulated
     // seconds, every checkpoint_wall minutes, at the end, and on a stop request. Ctrl-C or
     // SIGTERM stops after this step and keeps the output (app/stop_request.hpp).
@@ -309,6 +329,7 @@ RunReport Simulation::run(const RunOptions& opt) {
                               60 * spec_.checkpoint_wall) ||
                          (s.last && (spec_.checkpoint_every > 0 || spec_.checkpoint_wall > 0));
         if (files && (due || sig)) {
+            integ.publish(s.step);
             write_checkpoint(opt.out_dir, s.step, s.t, integ.first_dt());
             last_checkpoint = std::chrono::steady_clock::now();
         }
@@ -326,9 +347,9 @@ RunReport Simulation::run(const RunOptions& opt) {
         report.fluid_exit = domain_exit_.fluid();
         report.grain_exit = domain_exit_.grains();
         if (solver_) {
-            report.pair_list_builds = solver_->list_builds();
+            report.pair_list_builds = resident_ ? resident_->sorts() : solver_->list_builds();
             report.pairs = solver_->pair_list().pairs();
-            report.sph_bytes = solver_->memory_bytes();
+            report.sph_bytes = resident_ ? resident_->memory_bytes() : solver_->memory_bytes();
             report.sph_particles = set_.size();
         }
         if (rigid_) report.body_contacts = rigid_->contacts();

@@ -19,6 +19,7 @@
 #include "debrisflow/probes/design_formulas.hpp"
 #include "debrisflow/probes/probe.hpp"
 #include "debrisflow/rigid/body_solver.hpp"
+#include "debrisflow/sph/resident_backend.hpp"
 #include "debrisflow/sph/sph_solver.hpp"
 #include "debrisflow/time/integrator.hpp"
 #include <memory>
@@ -101,6 +102,9 @@ private:
     io::CaseSpec spec_;
     particles::ParticleSet set_;
     std::unique_ptr<sph::SphSolver> solver_;
+    // The SPH phase's time loop on a resident backend (exec.backend other than "host"); the
+    // solver above then keeps the parameters and the grid the probes read.
+    std::unique_ptr<sph::ResidentPhase> resident_;
     dem::GrainSet grains_;
     dem::WallSet dem_walls_;
     std::unique_ptr<dem::DemSolver> dem_;

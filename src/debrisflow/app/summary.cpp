@@ -58,9 +58,10 @@ void write_summary(const std::string& path, const io::CaseSpec& spec, const RunR
     o << "  \"pair_list_entries\": " << r.pairs << ",\n";
     if (r.sph_bytes > 0) {
         o << fmt::format(
-            "  \"sph_memory\": {{\"pair_loop\": {}, \"bytes\": {}, "
+            "  \"sph_memory\": {{\"backend\": {}, \"pair_loop\": {}, \"bytes\": {}, "
             "\"bytes_per_particle\": {}}},\n",
-            quoted(spec.sph.pair_loop), r.sph_bytes,
+            quoted(spec.backend), quoted(spec.backend == "host" ? spec.sph.pair_loop : "cells"),
+            r.sph_bytes,
             num(r.sph_particles > 0 ? double(r.sph_bytes) / double(r.sph_particles) : 0));
     }
     if (r.grains > 0)

@@ -190,6 +190,31 @@ CaseSpec read_case(const std::string& path, const std::vector<std::string>& over
     return read_case_text(text.str(), path, overrides);
 }
 
+namespace {
+
+// What the resident backends (exec.backend = "host_resident" or "cuda") run so far: fluid and
+// walls (fixed, moving, removed by remove_at), DBC, every kernel, viscosity and diffusion model,
+// both time schemes. Anything else is rejected here, so that `check` rejects it too.
+void require_backend_supports(const CaseSpec& c) {
+    if (c.backend == "host") return;
+    const auto no = [&](bool present, const std::string& what) {
+        if (present)
+            throw InputError(fmt::format("{}: exec.backend = \"{}\" runs fluid and walls only so "
+                                         "far; this case has {} (use exec.backend = \"host\")",
+                                         c.exec_origin.at("backend"), c.backend, what));
+    };
+    no(c.fluids.empty(), "no fluid");
+    no(c.has_dem, "grains ([dem])");
+    no(c.has_bodies(), "rigid bodies");
+    no(c.has_fem(), "FEM solids");
+    no(!c.inlets.empty(), "an inlet");
+    no(!c.outlets.empty(), "an outlet");
+    no(c.sph.boundary != "dbc", "sph.boundary = \"" + c.sph.boundary + "\" (DBC only)");
+    no(c.sph.no_slip != "morris", "sph.no_slip = \"" + c.sph.no_slip + "\"");
+}
+
+} // namespace
+
 CaseSpec read_case_text(const std::string& text, const std::string& path,
                         const std::vector<std::string>& overrides) {
     CaseSpec c;
@@ -210,6 +235,7 @@ CaseSpec read_case_text(const std::string& text, const std::string& path,
         toml::table physics = doc;
         physics.erase("output");
         if (auto* time = physics["time"].as_table()) time->erase("end");
+        physics.erase("exec"); // a run may continue on another backend
         c.physics_toml = echo_toml(physics);
     }
 
@@ -229,6 +255,12 @@ CaseSpec read_case_text(const std::string& text, const std::string& path,
     c.scheme = time->choice("scheme", {"symplectic", "verlet"}, "symplectic");
     c.verlet_euler_every = int(time->integer("verlet_euler_every", 40, 1, 1000000));
     time->finish();
+
+    if (auto exec = root.table("exec")) {
+        c.exec_origin = exec->origin();
+        c.backend = exec->choice("backend", {"host", "host_resident", "cuda"}, "host");
+        exec->finish();
+    }
 
     auto output = root.table("output");
     if (output) {
@@ -344,6 +376,7 @@ CaseSpec read_case_text(const std::string& text, const std::string& path,
                 t.fail("name", "two probes are named \"" + c.probes.back().name + "\"");
     }
     root.finish();
+    require_backend_supports(c);
     return c;
 }
 

@@ -259,6 +259,9 @@ struct CaseSpec {
     Real t_end = 0;
     std::string scheme = "symplectic"; // time.scheme: symplectic | verlet
     int verlet_euler_every = 40;
+    // exec.backend: which backend runs the SPH phase's time loop, "host" (the default),
+    // "host_resident" or "cuda" (sph/resident_backend.hpp).
+    std::string backend = "host";
     Real vtk_every = 0; // 0: first and last frame only
     bool vtk = true;
     Real progress_seconds = 2;
@@ -286,7 +289,7 @@ struct CaseSpec {
     // (output settings may change, and a finished run may be extended).
     std::string physics_toml;
     // Where the top level and the [time], [domain], [sph] and [dem] tables are in the file.
-    Origin origin, time_origin, domain_origin, sph_origin, dem_origin;
+    Origin origin, time_origin, domain_origin, sph_origin, dem_origin, exec_origin;
 };
 
 // Reads and validates a case file; `overrides` are "key=value" strings from --set.

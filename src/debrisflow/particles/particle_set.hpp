@@ -73,6 +73,8 @@ public:
     void state(checkpoint::Archive& ar);
     // Changes whenever particles are added, reordered or removed (indices become stale).
     std::uint64_t layout_version() const { return layout_version_; }
+    // Says that the arrays were replaced from elsewhere (a resident phase's copy).
+    void layout_changed() { ++layout_version_; }
 
 private:
     std::uint64_t layout_version_ = 0;

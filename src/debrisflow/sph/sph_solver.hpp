@@ -69,6 +69,21 @@ public:
     // (sph/sph_checkpoint.cpp).
     void state(checkpoint::Archive& ar);
 
+    // The density below which a boundary particle is not allowed to fall (the pressure
+    // sph.boundary_min_pressure; DBC's clamp).
+    Real boundary_min_density() const;
+    // The wall velocity the viscous terms see: Morris's extrapolation, or with
+    // sph.no_slip = "mdbc" the ghost-node velocities of the last update_boundary_density.
+    NoSlipWall no_slip_wall() const;
+    // Laminar+SPS constants (C_s dp)^2 and 2/3 C_I dp^2 (zeros for other viscosities).
+    struct SpsConstants {
+        Real smag = 0, blin = 0;
+    };
+    SpsConstants sps_constants() const;
+    // Sorts the particles into the cell grid again (after a resident phase has changed them,
+    // for the probes that interpolate on the grid).
+    void rebuild_grid() { build_grid(); }
+
 private:
     // Sorts the particles into the cell grid (fluid before walls in each cell for the gather).
     void build_grid();
@@ -81,15 +96,6 @@ private:
     // The list path's mDBC rows: boundary particles whose ghost node may see fluid before the
     // next list build (boundary_density.cpp).
     void refresh_mdbc_rows();
-    Real boundary_min_density() const;
-    // The wall velocity the viscous terms see: Morris's extrapolation, or with
-    // sph.no_slip = "mdbc" the ghost-node velocities of the last update_boundary_density.
-    NoSlipWall no_slip_wall() const;
-    // Laminar+SPS constants (C_s dp)^2 and 2/3 C_I dp^2 (zeros for other viscosities).
-    struct SpsConstants {
-        Real smag = 0, blin = 0;
-    };
-    SpsConstants sps_constants() const;
     // Per-particle apparent viscosity (generalised-Newtonian models; constant otherwise).
     // Apparent viscosities of a generalised-Newtonian fluid: over the half pair list (`pairs`)
     // or by a per-particle gather over the cell grid.

@@ -20,6 +20,12 @@ void Integrator::call_hooks(Hook where, const StepInfo& info) {
         if (h.where == where) h.f(info);
 }
 
+void Integrator::publish(long step) {
+    if (published_step_ == step) return;
+    for (Phase* p : phases_) p->publish();
+    published_step_ = step;
+}
+
 void Integrator::notify_observers(const StepInfo& info, bool force) {
     ScopedTimer timer(t_output_);
     for (auto& o : observers_) {
@@ -27,6 +33,7 @@ void Integrator::notify_observers(const StepInfo& info, bool force) {
         // Forced (a run's first or last call): once per step, also after the due calls.
         if (due || (force && o.fired_step != info.step)) {
             o.fired_step = info.step;
+            if (o.reads_state) publish(info.step);
             o.f(info);
         }
     }
@@ -36,6 +43,7 @@ RunResult Integrator::run(Real t0, Real t_end) {
     const auto wall0 = std::chrono::steady_clock::now();
     StepInfo info;
     info.t = t0;
+    published_step_ = -1;
     const bool resumed = resume_step_ >= 0;
     if (resumed) info.step = resume_step_;
     resume_step_ = -1;
@@ -113,9 +121,11 @@ RunResult Integrator::run(Real t0, Real t_end) {
         info.last = true;
         result_ = finish();
         notify_observers(info, true);
+        publish(info.step); // the final state on the host, whatever the observers read
         throw;
     }
     result_ = finish();
+    publish(info.step);
     return result_;
 }
 

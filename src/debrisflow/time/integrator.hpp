@@ -53,7 +53,13 @@ public:
 
     void add_phase(Phase* p) { phases_.push_back(p); }
     void add_hook(Hook where, Callback f) { hooks_.push_back({where, std::move(f)}); }
-    void add_observer(Schedule when, Callback f) { observers_.push_back({when, std::move(f)}); }
+    // An observer that reads the particles' state; `reads_state = false` for those that read
+    // only counts and clocks, so that a resident phase is not copied back for them.
+    void add_observer(Schedule when, Callback f, bool reads_state = true) {
+        observers_.push_back({when, std::move(f), reads_state});
+    }
+    // Brings every phase's state to the host (Phase::publish) once per step.
+    void publish(long step);
     void set_scheme(Scheme s, int euler_every = 40) {
         scheme_ = s;
         euler_every_ = euler_every;
@@ -88,6 +94,7 @@ private:
     struct ObserverEntry {
         Schedule when;
         Callback f;
+        bool reads_state = true;
         long fired_step = -1; // the step it was last called at
     };
     std::vector<Phase*> phases_;
@@ -100,6 +107,7 @@ private:
     int euler_every_ = 40;
     double t_output_ = 0;
     long resume_step_ = -1;
+    long published_step_ = -1;
     Real resume_first_dt_ = 0, first_dt_ = 0;
     RunResult result_;
 };

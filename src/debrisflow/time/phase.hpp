@@ -39,6 +39,9 @@ public:
     // says which body moves fastest and what pushed it). Empty: nothing to add.
     virtual std::string diagnose() const { return {}; }
     virtual void add_timings(Timings& t) const = 0;
+    // A phase whose state lives elsewhere (a device) copies it to the host's containers, which
+    // observers and checkpoints read; called only when one of them is due.
+    virtual void publish() {}
 };
 
 } // namespace debrisflow::time

@@ -1,0 +1,68 @@
+#pragma once
+// The host's memory space and the data-parallel primitives a resident time loop is written
+// against (sph/resident_sph.hpp): the same calls as CudaSpace (exec/cuda_space.cuh), run on
+// the host's threads through exec/parallel.hpp. A loop written against a Space runs on either;
+// the host one is what CI exercises of the device's code path.
+#include "debrisflow/core/real.hpp"
+#include "debrisflow/exec/parallel.hpp"
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+namespace debrisflow::exec {
+
+struct HostSpace {
+    static constexpr const char* name = "host";
+
+    // An array in this space. Copies to and from the host are explicit (upload, download).
+    template <class T> class Buffer {
+    public:
+        T* data() { return v_.data(); }
+        const T* data() const { return v_.data(); }
+        Index size() const { return Index(v_.size()); }
+        void resize(Index n) { v_.resize(std::size_t(n)); }
+        void clear() { std::vector<T>().swap(v_); }
+        void upload(const T* src, Index n) { v_.assign(src, src + n); }
+        void download(T* dst) const { std::copy(v_.begin(), v_.end(), dst); }
+        void swap(Buffer& o) { v_.swap(o.v_); }
+        T at(Index i) const { return v_[std::size_t(i)]; } // one element, copied to the host
+        std::size_t bytes() const { return v_.capacity() * sizeof(T); }
+
+    private:
+        std::vector<T> v_;
+    };
+
+    // f(i) for i in [0, n).
+    template <class F> static void for_each(Index n, const F& f) { exec::for_each(n, f); }
+
+    // max over i of f(i) for f >= 0 (0 for n = 0).
+    template <class F> static Real max_of(Index n, const F& f) { return exec::max_of(n, f); }
+
+    // The smallest i with bad(i), or n when there is none.
+    template <class F> static Index first_where(Index n, const F& bad) {
+        return exec::reduce(
+            n, n, [&](Index i, Index& b) { b = (i < b && bad(i)) ? i : b; },
+            [](Index& b, Index v) { b = v < b ? v : b; });
+    }
+
+    // Sorts the indices 0 .. n-1 stably by their key (keys in [0, key_count)) into order:
+    // a counting sort, as the host's cell grid does. The keys are left as they were.
+    class Sorter {
+    public:
+        void sort(const Index* keys, Index n, Index key_count, Index* order) {
+            count_.assign(std::size_t(key_count) + 1, 0);
+            for (Index i = 0; i < n; ++i) ++count_[std::size_t(keys[i]) + 1];
+            for (Index c = 0; c < key_count; ++c) count_[c + 1] += count_[c];
+            for (Index i = 0; i < n; ++i) order[count_[keys[i]]++] = i;
+        }
+        std::size_t bytes() const { return count_.capacity() * sizeof(Index); }
+
+    private:
+        std::vector<Index> count_;
+    };
+
+    // Waits until every launched loop has finished (the host's loops return finished).
+    static void synchronize() {}
+};
+
+} // namespace debrisflow::exec

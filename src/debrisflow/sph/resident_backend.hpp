@@ -1,0 +1,44 @@
+#pragma once
+// Which backend runs the SPH phase's time loop (exec.backend, --backend):
+// - "host": the SphSolver's own loops on the host's threads (OpenMP; the default);
+// - "host_resident": the resident loop (sph/resident_sph.hpp) in the host's memory, on its
+//   threads: the device's code path, run where there is no GPU (CI);
+// - "cuda": the resident loop in a CUDA device's memory (a build configured with
+//   DEBRISFLOW_CUDA; exec/cuda_space.cuh).
+#include "debrisflow/time/phase.hpp"
+#include <cstddef>
+#include <memory>
+#include <string>
+
+namespace debrisflow::sph {
+
+class SphSolver;
+
+// The SPH phase of a resident backend, as the Simulation sees it.
+class ResidentPhase : public time::Phase {
+public:
+    // Bytes held in the backend's memory (particles, grid, scratch).
+    virtual std::size_t memory_bytes() const = 0;
+    // Times the particles were sorted by cell.
+    virtual long sorts() const = 0;
+    // "host" or "cuda".
+    virtual const char* space_name() const = 0;
+    // Whether a particle left the domain or is not finite (what the host's domain exit and
+    // health check act on), found without copying the particles.
+    virtual bool any_unhealthy() const = 0;
+    // The host's ParticleSet was changed (a gate removed, particles that left taken out, a
+    // checkpoint restored): take it over again at the next neighbour search. Call publish()
+    // before changing it.
+    virtual void reload() = 0;
+};
+
+// The resident phase for `backend` ("host_resident" or "cuda") on the host solver's particles.
+// Throws InputError (naming `where`) when this build has no such backend.
+std::unique_ptr<ResidentPhase> make_resident_sph(const std::string& backend, SphSolver& host,
+                                                 const std::string& where);
+
+// Set by a build with the CUDA backend (exec/cuda_instantiations.cu: register_cuda_backend).
+using ResidentFactory = std::unique_ptr<ResidentPhase> (*)(SphSolver&);
+void set_cuda_factory(ResidentFactory f);
+
+} // namespace debrisflow::sph

@@ -1,0 +1,336 @@
+#pragma once
+// The SPH phase resident in a memory space (issue #33): every particle array lives in the
+// Space's memory (exec/host_space.hpp, exec/cuda_space.cuh) and every part of a step runs
+// there through the Space's primitives, launching the same host/device functors as the host
+// solver: the cell grid (CellKeys, a stable sort, CellStarts), reordering by cell, pressures,
+// apparent viscosities, the gather pair loop (FluidInteraction), both time schemes, and the
+// reductions of the stable step and the health check. The host's ParticleSet is brought up to
+// date only when an observer reads it (publish: probes, VTK frames, checkpoints, the end).
+// Written once; sph/resident_sph_host.cpp instantiates it for the host's threads (what CI
+// runs), exec/cuda_instantiations.cu for a CUDA device.
+#include "debrisflow/core/error.hpp"
+#include "debrisflow/core/stopwatch.hpp"
+#include "debrisflow/neighbors/cell_grid.hpp"
+#include "debrisflow/neighbors/cell_keys_k.hpp"
+#include "debrisflow/sph/apparent_viscosity_k.hpp"
+#include "debrisflow/sph/interaction_k.hpp"
+#include "debrisflow/sph/resident_backend.hpp"
+#include "debrisflow/sph/resident_steps_k.hpp"
+#include "debrisflow/sph/sph_solver.hpp"
+#include "debrisflow/sph/step_limit.hpp"
+#include "debrisflow/sph/time_schemes_k.hpp"
+#include <array>
+#include <type_traits>
+#include <variant>
+
+namespace debrisflow::sph {
+
+template <class Space> class ResidentSph final : public ResidentPhase {
+    template <class T> using Buffer = typename Space::template Buffer<T>;
+
+public:
+    // Takes over the host solver's particles at the first neighbour search; the host solver
+    // keeps the parameters, the models and the grid its probes read.
+    explicit ResidentSph(SphSolver& host) : host_(host), set_(host.particles()) {
+        const SphParams& p = host.params();
+        // the gather's grid: cells of the kernel support, each cell's fluid before its walls
+        config_.configure(host.domain().lo, host.domain().hi, host.support(), p.dim,
+                          host.domain().periodic);
+        grid_ = config_.view();
+        grid_.classes = 2;
+        keys_count_ = Index(config_.cell_count()) * 2;
+        sps_ = std::holds_alternative<models::LaminarSpsViscosity>(host.models().viscosity);
+    }
+
+    const char* name() const override { return "sph"; }
+
+    void update_neighbors(bool reorder) override {
+        ScopedTimer timer(t_neighbors_);
+        upload_once();
+        build_grid();
+        // as the host's gather path: sort the particles by cell whenever the step allows
+        if (reorder && host_.params().reorder_every > 0 &&
+            Space::first_where(n_, OutOfOrder{order_.data()}) < n_) {
+            permute();
+            build_grid();
+            ++sorts_;
+        }
+        Space::synchronize();
+    }
+
+    void compute_forces() override {
+        ScopedTimer timer(t_forces_);
+        const auto pv = view();
+        const SphParams& p = host_.params();
+        const NoSlipWall wall = host_.no_slip_wall();
+        Space::for_each(n_, TaitPressure{pv, host_.eos()});
+        const auto& m = host_.models();
+        std::visit(
+            [&](const auto& kernel, const auto& visc) {
+                using K = std::decay_t<decltype(kernel)>;
+                using V = std::decay_t<decltype(visc)>;
+                if constexpr (V::needs_apparent_viscosity)
+                    Space::for_each(n_, ApparentViscosity<K, V>{pv, grid_, kernel, visc, wall});
+                else
+                    Space::for_each(n_, FluidViscosity{pv, p.rho0 * visc.kinematic_viscosity()});
+            },
+            m.kernel, m.viscosity);
+        const auto sps = host_.sps_constants();
+        std::visit(
+            [&](const auto& kernel, const auto& visc, const auto& diff) {
+                using K = std::decay_t<decltype(kernel)>;
+                using V = std::decay_t<decltype(visc)>;
+                using D = std::decay_t<decltype(diff)>;
+                // pressures, sound speeds and volumes computed where a side is loaded
+                const PairTerms<K, V, D> terms{pv,         kernel,
+                                               visc,       diff,
+                                               nullptr,    nullptr,
+                                               nullptr,    sps_ ? tau_.data() : nullptr,
+                                               wall,       Real(0.01) * p.h * p.h,
+                                               host_.eos()};
+                Space::for_each(n_, make_gather(terms, grid_, p.gravity, sps.smag, sps.blin,
+                                                sps_ ? tau_next_.data() : nullptr));
+            },
+            m.kernel, m.viscosity, m.diffusion);
+        if (sps_) tau_.swap(tau_next_); // the stress this evaluation wrote, read by the next
+        Space::synchronize();
+    }
+
+    void predictor(Real dt) override {
+        ScopedTimer timer(t_integrate_);
+        for (auto& b : start_) b.resize(n_);
+        Space::for_each(n_, SymplecticPredictor{view(), step_start(), Real(0.5) * dt,
+                                                host_.boundary_min_density(), host_.domain()});
+        Space::synchronize();
+    }
+
+    void corrector(Real dt) override {
+        ScopedTimer timer(t_integrate_);
+        Space::for_each(n_, SymplecticCorrector{view(), step_start(), dt,
+                                                host_.boundary_min_density(), host_.domain()});
+        Space::synchronize();
+    }
+
+    void verlet_step(Real dt, bool euler) override {
+        ScopedTimer timer(t_integrate_);
+        if (!set_.keeps_previous_state())
+            throw std::logic_error("resident SPH: the Verlet scheme needs the state at t_n-1");
+        const PreviousState old{old_[0].data(), old_[1].data(), old_[2].data(), old_[3].data()};
+        Space::for_each(
+            n_, VerletUpdate{view(), old, dt, host_.boundary_min_density(), euler, host_.domain()});
+        Space::synchronize();
+    }
+
+    time::DtLimit stable_dt() const override {
+        const auto pv = view();
+        const SignalSpeed signal{pv, host_.eos()};
+        const AccelerationNorm accel{pv};
+        const StepExtremes e{Space::max_of(n_, signal), Space::max_of(n_, accel),
+                             max_kinematic_viscosity()};
+        time::DtLimit lim = step_limit(host_.params(), e);
+        const LowStep low = low_step(host_.params(), lim, e);
+        if (low == LowStep::none) return lim;
+        const Index i = low == LowStep::signal
+                            ? Space::first_where(n_, AtLeast<SignalSpeed>{signal, e.cmax})
+                            : Space::first_where(n_, AtLeast<AccelerationNorm>{accel, e.amax});
+        if (i < n_) lim.limiter += low_step_words(state_at(i), host_.params().rho0);
+        return lim;
+    }
+
+    void check_health(Real t) const override {
+        const Index bad =
+            Space::first_where(n_, Unhealthy{ParticleHealthy{view(), host_.domain()}});
+        if (bad < n_) throw InstabilityError(unhealthy_message(state_at(bad), t, host_.domain()));
+    }
+
+    void add_timings(time::Timings& t) const override {
+        t.neighbors += t_neighbors_;
+        t.forces += t_forces_;
+        t.integration += t_integrate_;
+    }
+
+    // Copies the particles to the host's ParticleSet (in the resident order) and rebuilds the
+    // host grid that the probes interpolate on.
+    void publish() override {
+        if (!resident_) return;
+        auto fields = real_fields(set_);
+        for (std::size_t f = 0; f < fields.size(); ++f) download(real_[f], *fields[f]);
+        if (set_.keeps_previous_state()) {
+            auto old = old_fields(set_);
+            for (std::size_t f = 0; f < old.size(); ++f) download(old_[f], *old[f]);
+        }
+        if (sps_) download(tau_, set_.sps_tau);
+        download(kind_, set_.kind);
+        download(group_, set_.group);
+        download(id_, set_.id);
+        set_.layout_changed();
+        host_.rebuild_grid();
+    }
+
+    // Bytes this phase holds in its memory space, and per particle.
+    std::size_t memory_bytes() const override {
+        std::size_t b = sorter_bytes() + keys_.bytes() + order_.bytes() + start_cells_.bytes() +
+                        tau_.bytes() + tau_next_.bytes() + kind_.bytes() + group_.bytes() +
+                        id_.bytes() + scratch_.bytes() + scratch_kind_.bytes() +
+                        scratch_group_.bytes() + scratch_id_.bytes();
+        for (const auto& a : real_) b += a.bytes();
+        for (const auto& a : old_) b += a.bytes();
+        for (const auto& a : start_) b += a.bytes();
+        return b;
+    }
+    bool any_unhealthy() const override {
+        return resident_ &&
+               Space::first_where(n_, Unhealthy{ParticleHealthy{view(), host_.domain()}}) < n_;
+    }
+    void reload() override { resident_ = false; }
+
+    // How many times the particles were sorted by cell.
+    long sorts() const override { return sorts_; }
+    const char* space_name() const override { return Space::name; }
+
+private:
+    static constexpr std::size_t kReal = 18; // the ParticleView's Real arrays, x .. mu
+
+    static std::array<std::vector<Real>*, kReal> real_fields(particles::ParticleSet& s) {
+        return {&s.x,   &s.y,    &s.z, &s.vx,   &s.vy,  &s.vz,  &s.ax,  &s.ay, &s.az,
+                &s.rho, &s.drho, &s.p, &s.mass, &s.wnx, &s.wny, &s.wnz, &s.wd, &s.mu};
+    }
+    static std::array<std::vector<Real>*, 4> old_fields(particles::ParticleSet& s) {
+        return {&s.vx_old, &s.vy_old, &s.vz_old, &s.rho_old};
+    }
+
+    template <class T> static void upload(Buffer<T>& b, const std::vector<T>& v) {
+        b.upload(v.data(), Index(v.size()));
+    }
+    template <class T> static void download(const Buffer<T>& b, std::vector<T>& v) {
+        v.resize(std::size_t(b.size()));
+        b.download(v.data());
+    }
+
+    // The host's particles, moved into the space once, before the first step.
+    void upload_once() {
+        if (resident_) return;
+        n_ = set_.size();
+        auto fields = real_fields(set_);
+        for (std::size_t f = 0; f < fields.size(); ++f) upload(real_[f], *fields[f]);
+        if (set_.keeps_previous_state()) {
+            auto old = old_fields(set_);
+            for (std::size_t f = 0; f < old.size(); ++f) upload(old_[f], *old[f]);
+        }
+        if (sps_) {
+            if (set_.sps_tau.size() != 6 * std::size_t(n_))
+                set_.sps_tau.assign(6 * std::size_t(n_), Real(0)); // first evaluation
+            upload(tau_, set_.sps_tau);
+            tau_next_.resize(6 * n_);
+        }
+        upload(kind_, set_.kind);
+        upload(group_, set_.group);
+        upload(id_, set_.id);
+        keys_.resize(n_);
+        order_.resize(n_);
+        start_cells_.resize(keys_count_ + 1);
+        resident_ = true;
+    }
+
+    particles::ParticleView view() const {
+        auto& r = const_cast<std::array<Buffer<Real>, kReal>&>(real_);
+        return {r[0].data(),
+                r[1].data(),
+                r[2].data(),
+                r[3].data(),
+                r[4].data(),
+                r[5].data(),
+                r[6].data(),
+                r[7].data(),
+                r[8].data(),
+                r[9].data(),
+                r[10].data(),
+                r[11].data(),
+                r[12].data(),
+                r[13].data(),
+                r[14].data(),
+                r[15].data(),
+                r[16].data(),
+                r[17].data(),
+                const_cast<Buffer<std::uint8_t>&>(kind_).data(),
+                const_cast<Buffer<std::int16_t>&>(group_).data(),
+                n_};
+    }
+
+    StepStart step_start() {
+        return {start_[0].data(), start_[1].data(), start_[2].data(), start_[3].data(),
+                start_[4].data(), start_[5].data(), start_[6].data()};
+    }
+
+    // Keys (cell, class), a stable sort of the indices by key, then each key's first sorted
+    // position: the same grid as CellGrid::build's counting sort.
+    void build_grid() {
+        const auto pv = view();
+        Space::for_each(n_, neighbors::CellKeys{grid_, pv.x, pv.y, pv.z, 1, pv.kind, keys_.data()});
+        sorter_.sort(keys_.data(), n_, keys_count_, order_.data());
+        Space::for_each(keys_count_ + 1,
+                        CellStarts{keys_.data(), order_.data(), n_, start_cells_.data()});
+        grid_.start = start_cells_.data();
+        grid_.order = order_.data();
+    }
+
+    // Every per-particle array gathered into the grid's order, each into a scratch array of
+    // its type that then takes its place; the order becomes the identity.
+    void permute() {
+        for (auto& a : real_) gather(a, scratch_, 1);
+        if (set_.keeps_previous_state())
+            for (auto& a : old_) gather(a, scratch_, 1);
+        if (sps_) gather(tau_, tau_next_, 6); // tau_next_ is free between force evaluations
+        gather(kind_, scratch_kind_, 1);
+        gather(group_, scratch_group_, 1);
+        gather(id_, scratch_id_, 1);
+    }
+    template <class T> void gather(Buffer<T>& a, Buffer<T>& scratch, int width) {
+        scratch.resize(width * n_);
+        Space::for_each(n_, GatherByOrder<T>{a.data(), order_.data(), scratch.data(), width});
+        a.swap(scratch);
+    }
+
+    Real max_kinematic_viscosity() const {
+        return std::visit(
+            [&](const auto& v) {
+                if constexpr (std::decay_t<decltype(v)>::needs_apparent_viscosity)
+                    return Space::max_of(n_, FluidKinematicViscosity{view()});
+                else
+                    return Real(v.kinematic_viscosity());
+            },
+            host_.models().viscosity);
+    }
+
+    ParticleState state_at(Index i) const {
+        const auto& r = real_;
+        return {id_.at(i),
+                {r[0].at(i), r[1].at(i), r[2].at(i)},
+                {r[3].at(i), r[4].at(i), r[5].at(i)},
+                {r[6].at(i), r[7].at(i), r[8].at(i)},
+                r[9].at(i),
+                kind_.at(i) == std::uint8_t(particles::Kind::fluid)};
+    }
+
+    std::size_t sorter_bytes() const { return sorter_.bytes(); }
+
+    SphSolver& host_;
+    particles::ParticleSet& set_;
+    neighbors::CellGrid config_; // the grid's geometry only; its cells live in start_cells_
+    neighbors::GridView grid_{};
+    Index keys_count_ = 0, n_ = 0;
+    bool sps_ = false, resident_ = false;
+    std::array<Buffer<Real>, kReal> real_;
+    std::array<Buffer<Real>, 4> old_;   // Verlet: v and rho at t_n-1
+    std::array<Buffer<Real>, 7> start_; // symplectic: x, v and rho at t_n
+    Buffer<Real> tau_, tau_next_, scratch_;
+    Buffer<std::uint8_t> kind_, scratch_kind_;
+    Buffer<std::int16_t> group_, scratch_group_;
+    Buffer<ParticleId> id_, scratch_id_;
+    Buffer<Index> keys_, order_, start_cells_;
+    mutable typename Space::Sorter sorter_;
+    long sorts_ = 0;
+    double t_neighbors_ = 0, t_forces_ = 0, t_integrate_ = 0;
+};
+
+} // namespace debrisflow::sph
