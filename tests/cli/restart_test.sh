@@ -48,6 +48,7 @@ while read -r name file end; do
 done <<CASES
 dambreak $src/cases/dambreak2d.toml 0.1
 gate_sps $inputs/restart_gate_sps2d.toml 0.3
+gate_sps_resident $inputs/restart_gate_sps_resident2d.toml 0.3
 hb_inlet_outlet $inputs/restart_hb_inlet2d.toml 1.2
 gate_inlet_outlet_cells $inputs/restart_gate_inlet_outlet_cells2d.toml 0.4
 dem_column_settled_gate $src/cases/deposits/column_collapse2d.toml 0.2

@@ -7,6 +7,9 @@
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/core/memory_budget.hpp"
 #include "debrisflow/exec/parallel.hpp"
+#if defined(DEBRISFLOW_CUDA_BACKEND)
+#include "debrisflow/exec/cuda_backend.hpp"
+#endif
 #include "debrisflow/io/case_spec.hpp"
 #include "debrisflow/io/output_dir.hpp"
 #include "debrisflow/scenario/resource_estimate.hpp"
@@ -40,11 +43,13 @@ int check(const std::string& file, const std::vector<std::string>& sets) {
                              format_bytes(memory_budget_bytes()), exec::max_threads());
     if (sim.has_fluid()) {
         const auto d = sim.solver().initial_dt();
-        std::cout << fmt::format("sph: dp = {} m, kernel {}, h = {:.4g} m, c0 = {:.4g} m/s, "
-                                 "walls {}, pairs {}; initial dt {:.4g} s ({})\n",
-                                 spec.dp, spec.sph.kernel, spec.sph.h, spec.sph.c0,
-                                 sph::wall_words(spec.sph), sph::pair_loop_words(spec.sph), d.dt,
-                                 d.limiter);
+        std::cout << fmt::format(
+            "sph: dp = {} m, kernel {}, h = {:.4g} m, c0 = {:.4g} m/s, "
+            "walls {}, pairs {}; initial dt {:.4g} s ({})\n",
+            spec.dp, spec.sph.kernel, spec.sph.h, spec.sph.c0, sph::wall_words(spec.sph),
+            spec.backend == "host" ? sph::pair_loop_words(spec.sph) : "gathered over cells", d.dt,
+            d.limiter);
+        std::cout << fmt::format("backend: {}\n", sph::backend_words(spec.backend));
     }
     if (sim.has_grains()) {
         const auto& d = sim.grains();
@@ -137,18 +142,23 @@ int main(int argc, char** argv) {
                  "exit codes: 0 done, 2 bad input or usage, 3 the run went unstable (output "
                  "kept),\n130 stopped by a signal (output kept), 1 internal error"};
     cli.require_subcommand(0, 1);
-    std::string file, out, max_memory, restart;
+    std::string file, out, max_memory, restart, backend;
     std::vector<std::string> sets;
     int threads = 0;
     bool quiet = false, overwrite = false, version = false;
     cli.add_flag("--version", version, "print the version, git revision and build options");
     const auto threads_range = CLI::Range(1, 4096);
+    const auto backends = CLI::IsMember({"host", "host_resident", "cuda"});
+    const char* backend_help = "where the SPH phase's time loop runs: host (default), "
+                               "host_resident (the device's loop on the host) or cuda; "
+                               "the same as --set exec.backend=...";
     auto* run = cli.add_subcommand("run", "run a case");
     run->add_option("case", file, "case file (TOML)")->required();
     run->add_option("--out", out, "output folder (default: out/<case name>)");
     run->add_option("--set", sets, "override a key: --set time.end=0.05")->take_all();
     run->add_option("--threads", threads, "OpenMP threads (default: all cores)")
         ->check(threads_range);
+    run->add_option("--backend", backend, backend_help)->check(backends);
     run->add_flag("--quiet", quiet, "only errors on the terminal");
     run->add_option("--restart", restart,
                     "continue from the newest checkpoint of an output folder (OUT or "
@@ -164,6 +174,7 @@ int main(int argc, char** argv) {
     chk->add_option("--threads", threads, "OpenMP threads used to build the case")
         ->check(threads_range);
     chk->add_option("--max-memory", max_memory, "as for run");
+    chk->add_option("--backend", backend, backend_help)->check(backends);
     try {
         cli.parse(argc, argv);
         if (!version && !run->parsed() && !chk->parsed()) {
@@ -179,6 +190,10 @@ int main(int argc, char** argv) {
                                  app::build_revision(), app::build_options());
         return 0;
     }
+#if defined(DEBRISFLOW_CUDA_BACKEND)
+    cuda::register_backend();
+#endif
+    if (!backend.empty()) sets.push_back("exec.backend=\"" + backend + "\"");
     try {
         if (!max_memory.empty()) set_memory_budget_bytes(parse_bytes(max_memory));
         if (threads > 0) exec::set_threads(threads);

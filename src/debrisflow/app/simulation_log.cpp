@@ -59,13 +59,15 @@ void Simulation::log_case(const RunReport& report) {
     log_.line(fmt::format("particles: {} fluid, {} boundary, {} grains; threads: {}", report.fluid,
                           report.boundary, report.grains, report.threads));
     if (solver_)
-        log_.line(fmt::format(
-            "sph: dp = {} m, kernel {}, h = {:.4g} m, c0 = {:.4g} m/s, viscosity "
-            "{}, diffusion {}, walls {}, pairs {}; initial dt = {:.3g} s (limited "
-            "by {})",
-            spec_.dp, spec_.sph.kernel, spec_.sph.h, spec_.sph.c0, spec_.sph.viscosity,
-            spec_.sph.diffusion, sph::wall_words(spec_.sph), sph::pair_loop_words(spec_.sph),
-            report.initial_dt.dt, report.initial_dt.limiter));
+        log_.line(
+            fmt::format("sph: dp = {} m, kernel {}, h = {:.4g} m, c0 = {:.4g} m/s, viscosity "
+                        "{}, diffusion {}, walls {}, pairs {}; initial dt = {:.3g} s (limited "
+                        "by {})",
+                        spec_.dp, spec_.sph.kernel, spec_.sph.h, spec_.sph.c0, spec_.sph.viscosity,
+                        spec_.sph.diffusion, sph::wall_words(spec_.sph),
+                        resident_ ? "gathered over cells" : sph::pair_loop_words(spec_.sph),
+                        report.initial_dt.dt, report.initial_dt.limiter));
+    if (solver_) log_.line("backend: " + sph::backend_words(spec_.backend));
     if (dem_)
         log_.line(fmt::format("dem: {} grains{}, {:.4g} kg, {} walls; dt = {:.3g} s ({}; automatic "
                               "{:.3g} s){}",

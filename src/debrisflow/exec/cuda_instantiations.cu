@@ -1,10 +1,13 @@
 // Compiles the host/device SPH and DEM functors with nvcc and launches them from a CUDA
-// kernel, so that every per-pair rule stays device-callable. No GPU is needed to compile this
-// file.
+// kernel, so that every per-pair rule stays device-callable, and the resident SPH loop on the
+// device (exec.backend = "cuda"). No GPU is needed to compile this file.
+#include "debrisflow/core/error.hpp"
 #include "debrisflow/coupling/drag_laws_k.hpp"
 #include "debrisflow/dem/grain_kick_drift_k.hpp"
 #include "debrisflow/dem/grain_slot_contact_k.hpp"
 #include "debrisflow/dem/grain_slot_pass_k.hpp"
+#include "debrisflow/exec/cuda_backend.hpp"
+#include "debrisflow/exec/cuda_space.cuh"
 #include "debrisflow/kernels/cubic_spline_k.hpp"
 #include "debrisflow/kernels/wendland_c2_k.hpp"
 #include "debrisflow/models/density_diffusion_k.hpp"
@@ -12,6 +15,7 @@
 #include "debrisflow/neighbors/cell_keys_k.hpp"
 #include "debrisflow/probes/fluid_samples_k.hpp"
 #include "debrisflow/sph/interaction_k.hpp"
+#include "debrisflow/sph/resident_sph.hpp"
 #include "debrisflow/sph/time_schemes_k.hpp"
 #include "debrisflow/sph/viscosity_registry.hpp"
 
@@ -111,4 +115,22 @@ void instantiate_all() {
     instantiate_kernel<kernels::CubicSpline>();
 }
 
+void register_backend() {
+    sph::set_cuda_factory([](sph::SphSolver& host,
+                             const std::string& where) -> std::unique_ptr<sph::ResidentPhase> {
+        int count = 0;
+        const cudaError_t e = cudaGetDeviceCount(&count);
+        if (e != cudaSuccess || count == 0)
+            throw InputError(where +
+                             ": exec.backend = \"cuda\" needs a CUDA device; this "
+                             "machine has none (" +
+                             std::string(e != cudaSuccess ? cudaGetErrorString(e) : "0 devices") +
+                             "); use \"host\" or \"host_resident\"");
+        return std::make_unique<sph::ResidentSph<exec::CudaSpace>>(host);
+    });
+}
+
 } // namespace debrisflow::cuda
+
+// The SPH phase's time loop resident on the device (sph/resident_sph.hpp).
+template class debrisflow::sph::ResidentSph<debrisflow::exec::CudaSpace>;

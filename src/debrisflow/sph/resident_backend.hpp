@@ -27,10 +27,12 @@ public:
     // health check act on), found without copying the particles.
     virtual bool any_unhealthy() const = 0;
     // The host's ParticleSet was changed (a gate removed, particles that left taken out, a
-    // checkpoint restored): take it over again at the next neighbour search. Call publish()
-    // before changing it.
+    // checkpoint restored): take it over again now. Call publish() before changing it.
     virtual void reload() = 0;
 };
+
+// How `check` and the log name where each phase runs on `backend`.
+std::string backend_words(const std::string& backend);
 
 // The resident phase for `backend` ("host_resident" or "cuda") on the host solver's particles.
 // Throws InputError (naming `where`) when this build has no such backend.
@@ -38,7 +40,8 @@ std::unique_ptr<ResidentPhase> make_resident_sph(const std::string& backend, Sph
                                                  const std::string& where);
 
 // Set by a build with the CUDA backend (exec/cuda_instantiations.cu: register_cuda_backend).
-using ResidentFactory = std::unique_ptr<ResidentPhase> (*)(SphSolver&);
+// It throws InputError (naming `where`) when the machine has no CUDA device.
+using ResidentFactory = std::unique_ptr<ResidentPhase> (*)(SphSolver&, const std::string& where);
 void set_cuda_factory(ResidentFactory f);
 
 } // namespace debrisflow::sph

@@ -182,7 +182,10 @@ public:
         return resident_ &&
                Space::first_where(n_, Unhealthy{ParticleHealthy{view(), host_.domain()}}) < n_;
     }
-    void reload() override { resident_ = false; }
+    void reload() override {
+        resident_ = false;
+        upload_once();
+    }
 
     // How many times the particles were sorted by cell.
     long sorts() const override { return sorts_; }

@@ -17,6 +17,15 @@ void set_cuda_factory(ResidentFactory f) {
     cuda_factory = f;
 }
 
+std::string backend_words(const std::string& backend) {
+    if (backend == "host") return "host, every phase on the host's threads (OpenMP)";
+    return backend + ", the SPH phase resident " +
+           (backend == "cuda" ? "on the CUDA device"
+                              : "in the host's memory and run on its threads, the device's code "
+                                "path") +
+           "; particles are copied to the host only for probes, frames, checkpoints and the end";
+}
+
 std::unique_ptr<ResidentPhase> make_resident_sph(const std::string& backend, SphSolver& host,
                                                  const std::string& where) {
     if (backend == "host_resident") return std::make_unique<ResidentSph<exec::HostSpace>>(host);
@@ -25,7 +34,7 @@ std::unique_ptr<ResidentPhase> make_resident_sph(const std::string& backend, Sph
             throw InputError(where + ": this build has no CUDA backend; configure it with "
                                      "`cmake --preset cuda` (nvcc) and run build-cuda/debrisflow, "
                                      "or use \"host\" or \"host_resident\"");
-        return cuda_factory(host);
+        return cuda_factory(host, where);
     }
     throw InputError(where + ": unknown backend '" + backend + "'");
 }

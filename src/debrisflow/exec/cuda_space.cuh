@@ -1,0 +1,197 @@
+#pragma once
+// A CUDA device's memory space and the data-parallel primitives of a resident time loop: the
+// same calls as HostSpace (exec/host_space.hpp), on the device. Arrays are device memory;
+// loops are kernels launching the same host/device functors; reductions and the stable sort
+// are CUB's (shipped with the CUDA toolkit). Compiled by nvcc only (exec/cuda_instantiations.cu).
+#include "debrisflow/core/real.hpp"
+#include <cstddef>
+#include <cub/device/device_radix_sort.cuh>
+#include <cub/device/device_reduce.cuh>
+#include <cuda_runtime.h>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace debrisflow::exec {
+
+inline void cuda_check(cudaError_t e, const char* what) {
+    if (e != cudaSuccess)
+        throw std::runtime_error(std::string("CUDA: ") + what + ": " + cudaGetErrorString(e));
+}
+
+namespace cuda_detail {
+
+template <class F> __global__ void for_each_kernel(Index n, F f) {
+    const Index i = Index(blockIdx.x) * Index(blockDim.x) + Index(threadIdx.x);
+    if (i < n) f(i);
+}
+
+// out[i] = f(i): what a reduction reduces.
+template <class F, class T> struct EvaluateInto {
+    F f;
+    T* out;
+    __device__ void operator()(Index i) const { out[i] = T(f(i)); }
+};
+
+// out[i] = i where bad(i), n otherwise (the minimum is the first bad index).
+template <class F> struct IndexWhere {
+    F bad;
+    Index n;
+    Index* out;
+    __device__ void operator()(Index i) const { out[i] = bad(i) ? i : n; }
+};
+
+struct Iota {
+    Index* out;
+    __device__ void operator()(Index i) const { out[i] = i; }
+};
+
+} // namespace cuda_detail
+
+struct CudaSpace {
+    static constexpr const char* name = "cuda";
+
+    // An array in device memory. Grows by reallocation (contents kept); copies to and from the
+    // host are explicit.
+    template <class T> class Buffer {
+    public:
+        Buffer() = default;
+        Buffer(const Buffer&) = delete;
+        Buffer& operator=(const Buffer&) = delete;
+        ~Buffer() { cudaFree(p_); }
+        T* data() { return p_; }
+        const T* data() const { return p_; }
+        Index size() const { return n_; }
+        void resize(Index n) {
+            if (n > cap_) {
+                T* q = nullptr;
+                cuda_check(cudaMalloc(&q, std::size_t(n) * sizeof(T)), "cudaMalloc");
+                if (n_ > 0)
+                    cuda_check(
+                        cudaMemcpy(q, p_, std::size_t(n_) * sizeof(T), cudaMemcpyDeviceToDevice),
+                        "cudaMemcpy (grow)");
+                cudaFree(p_);
+                p_ = q;
+                cap_ = n;
+            }
+            n_ = n;
+        }
+        void clear() {
+            cudaFree(p_);
+            p_ = nullptr;
+            n_ = cap_ = 0;
+        }
+        void upload(const T* src, Index n) {
+            resize(n);
+            if (n > 0)
+                cuda_check(cudaMemcpy(p_, src, std::size_t(n) * sizeof(T), cudaMemcpyHostToDevice),
+                           "cudaMemcpy (upload)");
+        }
+        void download(T* dst) const {
+            if (n_ > 0)
+                cuda_check(cudaMemcpy(dst, p_, std::size_t(n_) * sizeof(T), cudaMemcpyDeviceToHost),
+                           "cudaMemcpy (download)");
+        }
+        void swap(Buffer& o) {
+            std::swap(p_, o.p_);
+            std::swap(n_, o.n_);
+            std::swap(cap_, o.cap_);
+        }
+        T at(Index i) const {
+            T v{};
+            cuda_check(cudaMemcpy(&v, p_ + i, sizeof(T), cudaMemcpyDeviceToHost),
+                       "cudaMemcpy (at)");
+            return v;
+        }
+        std::size_t bytes() const { return std::size_t(cap_) * sizeof(T); }
+
+    private:
+        T* p_ = nullptr;
+        Index n_ = 0, cap_ = 0;
+    };
+
+    template <class F> static void for_each(Index n, const F& f) {
+        if (n <= 0) return;
+        const int block = 128;
+        cuda_detail::for_each_kernel<<<(n + block - 1) / block, block>>>(n, f);
+        cuda_check(cudaGetLastError(), "kernel launch");
+    }
+
+    // max over i of f(i) for f >= 0 (0 for n = 0): f into an array, then CUB's reduction.
+    template <class F> static Real max_of(Index n, const F& f) {
+        if (n <= 0) return 0;
+        auto& s = scratch();
+        s.values.resize(n);
+        for_each(n, cuda_detail::EvaluateInto<F, Real>{f, s.values.data()});
+        std::size_t bytes = 0;
+        cuda_check(cub::DeviceReduce::Max(nullptr, bytes, s.values.data(), s.real_out.data(), n),
+                   "cub::DeviceReduce::Max (size)");
+        s.real_out.resize(1);
+        s.temp.resize(Index(bytes));
+        cuda_check(
+            cub::DeviceReduce::Max(s.temp.data(), bytes, s.values.data(), s.real_out.data(), n),
+            "cub::DeviceReduce::Max");
+        const Real m = s.real_out.at(0);
+        return m > 0 ? m : Real(0);
+    }
+
+    // The smallest i with bad(i), or n when there is none.
+    template <class F> static Index first_where(Index n, const F& bad) {
+        if (n <= 0) return n;
+        auto& s = scratch();
+        s.indices.resize(n);
+        for_each(n, cuda_detail::IndexWhere<F>{bad, n, s.indices.data()});
+        std::size_t bytes = 0;
+        s.index_out.resize(1);
+        cuda_check(cub::DeviceReduce::Min(nullptr, bytes, s.indices.data(), s.index_out.data(), n),
+                   "cub::DeviceReduce::Min (size)");
+        s.temp.resize(Index(bytes));
+        cuda_check(
+            cub::DeviceReduce::Min(s.temp.data(), bytes, s.indices.data(), s.index_out.data(), n),
+            "cub::DeviceReduce::Min");
+        return s.index_out.at(0);
+    }
+
+    // Sorts the indices 0 .. n-1 stably by their key (keys in [0, key_count)) into order:
+    // CUB's radix sort of (key, index) pairs over the key's significant bits.
+    class Sorter {
+    public:
+        void sort(const Index* keys, Index n, Index key_count, Index* order) {
+            if (n <= 0) return;
+            int bits = 1;
+            while (bits < 31 && (Index(1) << bits) < key_count) ++bits;
+            iota_.resize(n);
+            keys_out_.resize(n);
+            for_each(n, cuda_detail::Iota{iota_.data()});
+            std::size_t bytes = 0;
+            cuda_check(cub::DeviceRadixSort::SortPairs(nullptr, bytes, keys, keys_out_.data(),
+                                                       iota_.data(), order, n, 0, bits),
+                       "cub::DeviceRadixSort::SortPairs (size)");
+            temp_.resize(Index(bytes));
+            cuda_check(cub::DeviceRadixSort::SortPairs(temp_.data(), bytes, keys, keys_out_.data(),
+                                                       iota_.data(), order, n, 0, bits),
+                       "cub::DeviceRadixSort::SortPairs");
+        }
+        std::size_t bytes() const { return iota_.bytes() + keys_out_.bytes() + temp_.bytes(); }
+
+    private:
+        Buffer<Index> iota_, keys_out_;
+        Buffer<unsigned char> temp_;
+    };
+
+    static void synchronize() { cuda_check(cudaDeviceSynchronize(), "cudaDeviceSynchronize"); }
+
+private:
+    // The reductions' work arrays, kept between calls.
+    struct Scratch {
+        Buffer<Real> values, real_out;
+        Buffer<Index> indices, index_out;
+        Buffer<unsigned char> temp;
+    };
+    static Scratch& scratch() {
+        static Scratch s;
+        return s;
+    }
+};
+
+} // namespace debrisflow::exec

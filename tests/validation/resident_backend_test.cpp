@@ -1,0 +1,113 @@
+// The resident SPH loop (sph/resident_sph.hpp: every particle array in the backend's memory,
+// every part of a step through the backend's primitives) run on the host's memory and threads
+// (exec.backend = "host_resident", exec/host_space.hpp) against the host solver with the same
+// pair visit (sph.pair_loop = "cells"), on whole cases: issue #33 asks that everything of the
+// CUDA backend but the CUDA runtime be exercised in CI. Both runs launch the same functors in
+// the same pair order, so they agree to round-off (bound 1e-10 relative, the issue's); they
+// measured bitwise equal when the test was written (2026-12-04).
+#include "probe_difference.hpp"
+#include "run_case.hpp"
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <map>
+
+using namespace debrisflow;
+
+namespace {
+
+struct State {
+    std::map<ParticleId, std::array<double, 8>> particles; // x, y, z, vx, vy, vz, rho, p
+    test::ProbeHistories probes;
+    long steps = 0;
+    Index count = 0;
+    double vmax = 0;
+};
+
+State run(const std::string& file, std::vector<std::string> sets, const std::string& backend,
+          Real until) {
+    sets.push_back("sph.pair_loop=\"cells\"");
+    sets.push_back(fmt::format("exec.backend=\"{}\"", backend));
+    app::Simulation sim(io::read_case(std::string(DEBRISFLOW_SOURCE_DIR) + "/" + file, sets));
+    const auto report = sim.run({"", true, 0, until});
+    State s;
+    s.steps = report.result.steps;
+    const auto& p = sim.particles();
+    s.count = p.size();
+    for (Index i = 0; i < p.size(); ++i) {
+        s.particles[p.id[i]] = {p.x[i],  p.y[i],  p.z[i],   p.vx[i],
+                                p.vy[i], p.vz[i], p.rho[i], p.p[i]};
+        s.vmax = std::max(s.vmax, std::hypot(p.vx[i], p.vy[i], p.vz[i]));
+    }
+    for (const auto& pr : sim.probes()) s.probes.push_back(pr->history());
+    return s;
+}
+
+// Largest differences over every particle (fluid and walls, by persistent id): positions in
+// dp, velocities against the largest speed, densities against rho0, pressures against the
+// largest; and over the probe samples against each column's largest magnitude.
+void check(const std::string& file, const std::vector<std::string>& sets, Real until, double dp,
+           double rho0) {
+    const State host = run(file, sets, "host", until);
+    const State resident = run(file, sets, "host_resident", until);
+    ASSERT_EQ(host.steps, resident.steps);
+    ASSERT_EQ(host.count, resident.count);
+    ASSERT_EQ(host.probes.size(), resident.probes.size());
+    for (std::size_t k = 0; k < host.probes.size(); ++k)
+        ASSERT_EQ(host.probes[k].size(), resident.probes[k].size());
+    double dx = 0, dv = 0, drho = 0, dpress = 0, pmax = 0;
+    for (const auto& [id, s] : host.particles) pmax = std::max(pmax, std::abs(s[7]));
+    for (const auto& [id, s] : host.particles) {
+        const auto it = resident.particles.find(id);
+        ASSERT_NE(it, resident.particles.end()) << "particle id " << id << " missing";
+        const auto& t = it->second;
+        dx = std::max(dx, std::hypot(s[0] - t[0], s[1] - t[1], s[2] - t[2]) / dp);
+        dv = std::max(dv, std::hypot(s[3] - t[3], s[4] - t[4], s[5] - t[5]) / host.vmax);
+        drho = std::max(drho, std::abs(s[6] - t[6]) / rho0);
+        dpress = std::max(dpress, std::abs(s[7] - t[7]) / pmax);
+    }
+    const double dprobe = test::probe_difference(host.probes, resident.probes);
+    std::cout << fmt::format("{}: {} steps, {} particles; largest differences: position {:.2e} "
+                             "dp, velocity {:.2e}, density {:.2e} rho0, pressure {:.2e}, probes "
+                             "{:.2e}\n",
+                             file, host.steps, host.count, dx, dv, drho, dpress, dprobe);
+    // Source: issue #33, "within 1e-10 relative where the pair order is the same".
+    EXPECT_LE(dx, 1e-10);
+    EXPECT_LE(dv, 1e-10);
+    EXPECT_LE(drho, 1e-10);
+    EXPECT_LE(dpress, 1e-10);
+    EXPECT_LE(dprobe, 1e-10);
+}
+
+} // namespace
+
+// DualSPHysics's CaseDambreak in 3D: wall pairs, cubic spline, Fourtakas, 0.05 s.
+TEST(ResidentBackend, DamBreak3D) {
+    check("cases/bench/dambreak3d.toml", {"dp=0.034"}, 0.05, 0.034, 1000);
+}
+
+// Periodic channel with Laminar+SPS: the lagged SPS stress carried and reordered with the
+// particles, periodic separations in the grid's stencil.
+TEST(ResidentBackend, ChannelLaminarSps) {
+    check("cases/bench/channel_sph.toml", {}, 0.05, 0.02, 1000);
+}
+
+// A gate removed at 0.05 s and a surge leaving the domain through its end (domain.exit =
+// "remove"): the resident particles are copied back, edited on the host and taken over again.
+TEST(ResidentBackend, GateAndDomainExit) {
+    check("cases/validation/gate_exit2d.toml", {"output.vtk=false"}, 0.6, 0.01, 1000);
+}
+
+// The demo case (Lobovsky dam break) with the Verlet scheme: the state at t_n-1 resident too.
+TEST(ResidentBackend, DamBreakVerlet) {
+    check("cases/dambreak2d.toml", {"dp=0.015", "time.scheme=\"verlet\"", "output.vtk=false"}, 0.3,
+          0.015, 1000);
+}
+
+// A Bingham slurry (apparent viscosity gathered per particle, the viscous step limit reduced
+// over the particles' viscosities).
+TEST(ResidentBackend, BinghamCollapse) {
+    check("cases/validation/viscous_collapse2d.toml",
+          {"sph.viscosity=\"bingham\"", "sph.consistency=10", "sph.yield_stress=20",
+           "sph.regularization=10", "dp=0.005", "output.vtk=false"},
+          0.05, 0.005, 1000);
+}
