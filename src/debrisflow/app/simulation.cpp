@@ -211,11 +211,10 @@ RunReport Simulation::run(const RunOptions& opt) {
         const Real at = *spec_.walls[w].remove_at;
         integ.add_hook(time::Hook::step_begin, [this, w, at](const time::StepInfo& s) {
             if (wall_removed_[w] || s.t < at) return;
-            if (solver_) {
-                if (resident_) resident_->publish();
+            if (resident_)
+                resident_->remove_group(std::int16_t(w)); // where the particles are
+            else if (solver_)
                 solver_->remove_group(std::int16_t(w));
-                if (resident_) resident_->reload();
-            }
             if (dem_) dem_->remove_wall(int(w));
             if (!dem_ && rigid_) dem_walls_.walls()[w].active = false;
             wall_removed_[w] = 1;
@@ -254,13 +253,18 @@ RunReport Simulation::run(const RunOptions& opt) {
     // outlets and before the neighbour search and the health checks.
     if (domain_exit_.removes())
         integ.add_hook(time::Hook::after_integration, [this](const time::StepInfo& s) {
-            // a resident phase is copied back only when a particle has left
+            // a resident phase finds and removes its leavers where its particles are
             if (resident_) {
-                if (!resident_->any_unhealthy()) return;
-                resident_->publish();
+                const auto left = resident_->remove_fluid_outside(domain_exit_.faces());
+                if (left.face.empty()) return;
+                std::vector<flow::DomainExit::Leaver> leavers;
+                for (std::size_t k = 0; k < left.face.size(); ++k)
+                    leavers.push_back({left.face[k], left.mass[k]});
+                const std::string note = domain_exit_.tally_fluid(leavers, left.mass_in_set, s.t);
+                if (!note.empty()) log_.line(note);
+                return;
             }
             const std::string note = domain_exit_.apply(solver_.get(), dem_.get(), s.t);
-            if (resident_) resident_->reload();
             if (!note.empty()) log_.line(note);
         });
     for (auto& p : probes_) {
@@ -291,7 +295,8 @@ RunReport Simulation::run(const RunOptions& opt) {
         time::Schedule::every_steps(1),
         [&](const time::StepInfo& s) {
             if (s.step > 0)
-                particle_steps += double(set_.size() + grains_.size() + (fem_ ? fem_->nodes() : 0));
+                particle_steps += double((resident_ ? resident_->size() : set_.size()) +
+                                         grains_.size() + (fem_ ? fem_->nodes() : 0));
         },
         false);
     const auto wall0 = std::chrono::steady_clock::now();

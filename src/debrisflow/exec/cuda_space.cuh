@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cub/device/device_radix_sort.cuh>
 #include <cub/device/device_reduce.cuh>
+#include <cub/device/device_scan.cuh>
 #include <cuda_runtime.h>
 #include <stdexcept>
 #include <string>
@@ -133,6 +134,41 @@ struct CudaSpace {
             "cub::DeviceReduce::Max");
         const Real m = s.real_out.at(0);
         return m > 0 ? m : Real(0);
+    }
+
+    // sum over i of f(i) (0 for n = 0): f into an array, then CUB's reduction.
+    template <class F> static Real sum_of(Index n, const F& f) {
+        if (n <= 0) return 0;
+        auto& s = scratch();
+        s.values.resize(n);
+        for_each(n, cuda_detail::EvaluateInto<F, Real>{f, s.values.data()});
+        std::size_t bytes = 0;
+        s.real_out.resize(1);
+        cuda_check(cub::DeviceReduce::Sum(nullptr, bytes, s.values.data(), s.real_out.data(), n),
+                   "cub::DeviceReduce::Sum (size)");
+        s.temp.resize(Index(bytes));
+        cuda_check(
+            cub::DeviceReduce::Sum(s.temp.data(), bytes, s.values.data(), s.real_out.data(), n),
+            "cub::DeviceReduce::Sum");
+        return s.real_out.at(0);
+    }
+
+    // out[i] = in[0] + ... + in[i-1]; returns the total (CUB's scan).
+    static Index exclusive_scan(Index n, const Index* in, Index* out) {
+        if (n <= 0) return 0;
+        auto& s = scratch();
+        std::size_t bytes = 0;
+        cuda_check(cub::DeviceScan::ExclusiveSum(nullptr, bytes, in, out, n),
+                   "cub::DeviceScan::ExclusiveSum (size)");
+        s.temp.resize(Index(bytes));
+        cuda_check(cub::DeviceScan::ExclusiveSum(s.temp.data(), bytes, in, out, n),
+                   "cub::DeviceScan::ExclusiveSum");
+        Index last_in = 0, last_out = 0;
+        cuda_check(cudaMemcpy(&last_in, in + n - 1, sizeof(Index), cudaMemcpyDeviceToHost),
+                   "cudaMemcpy (scan)");
+        cuda_check(cudaMemcpy(&last_out, out + n - 1, sizeof(Index), cudaMemcpyDeviceToHost),
+                   "cudaMemcpy (scan)");
+        return last_out + last_in;
     }
 
     // The smallest i with bad(i), or n when there is none.

@@ -38,6 +38,15 @@ struct HostSpace {
     // max over i of f(i) for f >= 0 (0 for n = 0).
     template <class F> static Real max_of(Index n, const F& f) { return exec::max_of(n, f); }
 
+    // sum over i of f(i) (0 for n = 0).
+    template <class F> static Real sum_of(Index n, const F& f) { return exec::sum_of<Real>(n, f); }
+
+    // out[i] = in[0] + ... + in[i-1]; returns the total (stream compaction's positions).
+    static Index exclusive_scan(Index n, const Index* in, Index* out) {
+        return exec::exclusive_scan<Index>(
+            n, [=](Index i) { return in[i]; }, out);
+    }
+
     // The smallest i with bad(i), or n when there is none.
     template <class F> static Index first_where(Index n, const F& bad) {
         return exec::reduce(

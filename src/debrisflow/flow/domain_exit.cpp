@@ -23,17 +23,18 @@ Real ExitTally::total_mass() const {
 }
 
 int DomainExit::face_of(Vec3 p) const {
-    // The face crossed furthest, relative to the domain's extent in that direction.
-    int face = -1;
-    Real worst = 0;
-    for (int d = 0; d < 3; ++d) {
-        if (domain_.periodic[std::size_t(d)] || (dim_ == 2 && d == 1)) continue;
-        const Real extent = domain_.hi[d] - domain_.lo[d];
-        const Real below = (domain_.lo[d] - p[d]) / extent, above = (p[d] - domain_.hi[d]) / extent;
-        if (below > worst) worst = below, face = 2 * d;
-        if (above > worst) worst = above, face = 2 * d + 1;
+    return faces()(p);
+}
+
+std::string DomainExit::tally_fluid(const std::vector<Leaver>& leavers, Real mass_in_set, Real t) {
+    const auto before = fluid_.count;
+    const Real held = fluid_.total_mass() + mass_in_set; // lost before + in the set
+    for (const Leaver& l : leavers) {
+        ++fluid_.count[std::size_t(l.face)];
+        fluid_.mass[std::size_t(l.face)] += l.mass;
     }
-    return face;
+    return note("fluid particles", dim_ == 2 ? "kg/m" : "kg", fluid_, before, held, fluid_warned_,
+                t);
 }
 
 std::string DomainExit::note(const char* phase, const char* unit, ExitTally& tally,
@@ -77,22 +78,19 @@ std::string DomainExit::apply(sph::SphSolver* fluid, dem::DemSolver* grains, Rea
             return s.kind[i] == fluid_kind && finite(p) && face_of(p) >= 0 ? Real(1) : Real(0);
         });
         if (any > 0) {
-            const auto before = fluid_.count;
             std::vector<std::uint8_t> keep(std::size_t(n), 1);
-            Real held = fluid_.total_mass(); // all the fluid ever held: lost before + in the set
+            std::vector<Leaver> leavers;
+            Real mass_in_set = 0;
             for (Index i = 0; i < n; ++i) {
                 if (s.kind[i] != fluid_kind) continue;
-                held += s.mass[i];
-                const Vec3 p{s.x[i], s.y[i], s.z[i]};
-                const int f = finite(p) ? face_of(p) : -1;
+                mass_in_set += s.mass[i];
+                const int f = faces().of_finite({s.x[i], s.y[i], s.z[i]});
                 if (f < 0) continue;
                 keep[std::size_t(i)] = 0;
-                ++fluid_.count[std::size_t(f)];
-                fluid_.mass[std::size_t(f)] += s.mass[i];
+                leavers.push_back({f, s.mass[i]});
             }
             fluid->remove_particles(keep);
-            join(note("fluid particles", dim_ == 2 ? "kg/m" : "kg", fluid_, before, held,
-                      fluid_warned_, t));
+            join(tally_fluid(leavers, mass_in_set, t));
         }
     }
     if (grains && grains->may_have_left()) {

@@ -1,7 +1,9 @@
 #pragma once
+#include "debrisflow/flow/exit_faces_k.hpp"
 #include "debrisflow/io/case_spec.hpp"
 #include <array>
 #include <string>
+#include <vector>
 
 namespace debrisflow::dem {
 class DemSolver;
@@ -48,6 +50,17 @@ public:
     // The face a finite point outside the domain crossed (index into face_names), or -1 when
     // it is inside (periodic directions and y in 2D never count).
     int face_of(Vec3 p) const;
+    ExitFaces faces() const { return {domain_, dim_}; }
+
+    // One fluid particle that left: the face it crossed and its mass.
+    struct Leaver {
+        int face;
+        Real mass;
+    };
+    // Counts fluid particles that left (in index order) against the fluid mass the set held
+    // before they were removed; the log lines as apply's. The resident SPH loop finds and
+    // removes its leavers itself and reports them here.
+    std::string tally_fluid(const std::vector<Leaver>& leavers, Real mass_in_set, Real t);
 
 private:
     std::string note(const char* phase, const char* unit, ExitTally& tally,

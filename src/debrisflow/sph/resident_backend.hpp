@@ -5,10 +5,12 @@
 //   threads: the device's code path, run where there is no GPU (CI);
 // - "cuda": the resident loop in a CUDA device's memory (a build configured with
 //   DEBRISFLOW_CUDA; exec/cuda_space.cuh).
+#include "debrisflow/flow/exit_faces_k.hpp"
 #include "debrisflow/time/phase.hpp"
 #include <cstddef>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace debrisflow::sph {
 
@@ -23,6 +25,18 @@ public:
     virtual long sorts() const = 0;
     // "host" or "cuda".
     virtual const char* space_name() const = 0;
+    // Particles held now (the host's set is brought up to date only by publish()).
+    virtual Index size() const = 0;
+    // Removes the boundary particles of wall group `group` (a gate lifting), where they are.
+    virtual void remove_group(std::int16_t group) = 0;
+    // Removes the fluid particles whose centre left the domain, where they are, and says which
+    // left (index order): the faces they crossed, their masses, and the fluid mass held before.
+    struct Leaving {
+        std::vector<int> face;
+        std::vector<Real> mass;
+        Real mass_in_set = 0;
+    };
+    virtual Leaving remove_fluid_outside(const flow::ExitFaces& faces) = 0;
     // Whether a particle left the domain or is not finite (what the host's domain exit and
     // health check act on), found without copying the particles.
     virtual bool any_unhealthy() const = 0;

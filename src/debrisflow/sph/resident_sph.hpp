@@ -172,12 +172,50 @@ public:
         std::size_t b = sorter_bytes() + keys_.bytes() + order_.bytes() + start_cells_.bytes() +
                         tau_.bytes() + tau_next_.bytes() + kind_.bytes() + group_.bytes() +
                         id_.bytes() + scratch_.bytes() + scratch_kind_.bytes() +
-                        scratch_group_.bytes() + scratch_id_.bytes();
+                        scratch_group_.bytes() + scratch_id_.bytes() + keep_.bytes() +
+                        leave_.bytes() + pos_.bytes() + face_.bytes();
         for (const auto& a : real_) b += a.bytes();
         for (const auto& a : old_) b += a.bytes();
         for (const auto& a : start_) b += a.bytes();
         return b;
     }
+    Index size() const override { return resident_ ? n_ : set_.size(); }
+
+    void remove_group(std::int16_t group) override {
+        keep_.resize(n_);
+        Space::for_each(n_, KeepOutsideGroup{view(), group, keep_.data()});
+        compact();
+    }
+
+    Leaving remove_fluid_outside(const flow::ExitFaces& faces) override {
+        Leaving out;
+        const auto pv = view();
+        keep_.resize(n_);
+        face_.resize(n_);
+        Space::for_each(n_, KeepInsideDomain{pv, faces, keep_.data(), face_.data()});
+        if (Space::first_where(n_, Dropped{keep_.data()}) == n_) return out; // none left
+        out.mass_in_set = Space::sum_of(n_, FluidMass{pv});
+        // the leavers' faces and masses, gathered in index order and copied to the host
+        leave_.resize(n_);
+        pos_.resize(n_);
+        Space::for_each(n_, Complement{keep_.data(), leave_.data()});
+        const Index m = Space::exclusive_scan(n_, leave_.data(), pos_.data());
+        Buffer<int> faces_out;
+        Buffer<Real> mass_out;
+        faces_out.resize(m);
+        mass_out.resize(m);
+        Space::for_each(
+            n_, ScatterKept<int>{face_.data(), leave_.data(), pos_.data(), faces_out.data(), 1});
+        Space::for_each(n_,
+                        ScatterKept<Real>{pv.mass, leave_.data(), pos_.data(), mass_out.data(), 1});
+        out.face.resize(std::size_t(m));
+        out.mass.resize(std::size_t(m));
+        faces_out.download(out.face.data());
+        mass_out.download(out.mass.data());
+        compact();
+        return out;
+    }
+
     bool any_unhealthy() const override {
         return resident_ &&
                Space::first_where(n_, Unhealthy{ParticleHealthy{view(), host_.domain()}}) < n_;
@@ -269,6 +307,8 @@ private:
     // position: the same grid as CellGrid::build's counting sort.
     void build_grid() {
         const auto pv = view();
+        keys_.resize(n_);
+        order_.resize(n_);
         Space::for_each(n_, neighbors::CellKeys{grid_, pv.x, pv.y, pv.z, 1, pv.kind, keys_.data()});
         sorter_.sort(keys_.data(), n_, keys_count_, order_.data());
         Space::for_each(keys_count_ + 1,
@@ -291,6 +331,32 @@ private:
     template <class T> void gather(Buffer<T>& a, Buffer<T>& scratch, int width) {
         scratch.resize(width * n_);
         Space::for_each(n_, GatherByOrder<T>{a.data(), order_.data(), scratch.data(), width});
+        a.swap(scratch);
+    }
+
+    // Keeps the particles with keep_[i] = 1, in order (stream compaction: an exclusive scan of
+    // the flags, then every array scattered to its new place).
+    void compact() {
+        pos_.resize(n_);
+        const Index m = Space::exclusive_scan(n_, keep_.data(), pos_.data());
+        if (m == n_) return;
+        for (auto& a : real_) scatter(a, scratch_, 1, m);
+        if (set_.keeps_previous_state())
+            for (auto& a : old_) scatter(a, scratch_, 1, m);
+        if (sps_) {
+            scatter(tau_, tau_next_, 6, m);
+            tau_next_.resize(6 * m);
+        }
+        scatter(kind_, scratch_kind_, 1, m);
+        scatter(group_, scratch_group_, 1, m);
+        scatter(id_, scratch_id_, 1, m);
+        n_ = m;
+        Space::synchronize();
+    }
+    template <class T> void scatter(Buffer<T>& a, Buffer<T>& scratch, int width, Index m) {
+        scratch.resize(width * m);
+        Space::for_each(n_,
+                        ScatterKept<T>{a.data(), keep_.data(), pos_.data(), scratch.data(), width});
         a.swap(scratch);
     }
 
@@ -331,6 +397,8 @@ private:
     Buffer<std::int16_t> group_, scratch_group_;
     Buffer<ParticleId> id_, scratch_id_;
     Buffer<Index> keys_, order_, start_cells_;
+    Buffer<Index> keep_, leave_, pos_; // stream compaction: flags and their scan
+    Buffer<int> face_;                 // the face each particle crossed (domain exit), or -1
     mutable typename Space::Sorter sorter_;
     long sorts_ = 0;
     double t_neighbors_ = 0, t_forces_ = 0, t_integrate_ = 0;

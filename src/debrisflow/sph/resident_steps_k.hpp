@@ -2,6 +2,7 @@
 // The small per-item steps of the resident SPH loop (sph/resident_sph.hpp) that the host
 // solver does with its own containers: the grid's cell starts, reordering, the constant
 // viscosity, and the predicates its reductions look for. Host/device functors.
+#include "debrisflow/flow/exit_faces_k.hpp"
 #include "debrisflow/particles/particle_set.hpp"
 #include "debrisflow/sph/time_schemes_k.hpp"
 #include <type_traits>
@@ -39,6 +40,62 @@ template <class T> struct GatherByOrder {
         const std::size_t to = std::size_t(i) * width, from = std::size_t(order[i]) * width;
         for (int k = 0; k < width; ++k) out[to + k] = in[from + k];
     }
+};
+
+// out[at[i]] = in[i] for the items with keep[i] (stream compaction, `at` the exclusive scan
+// of keep), `width` values per item.
+template <class T> struct ScatterKept {
+    const T* in;
+    const Index* keep;
+    const Index* at;
+    T* out;
+    int width;
+    DF_HD void operator()(Index i) const {
+        if (!keep[i]) return;
+        const std::size_t to = std::size_t(at[i]) * width, from = std::size_t(i) * width;
+        for (int k = 0; k < width; ++k) out[to + k] = in[from + k];
+    }
+};
+
+// keep[i] = 0 for the boundary particles of wall group `group` (a gate lifting), 1 otherwise.
+struct KeepOutsideGroup {
+    particles::ParticleView pv;
+    std::int16_t group;
+    Index* keep;
+    DF_HD void operator()(Index i) const { keep[i] = pv.is_fluid(i) || pv.group[i] != group; }
+};
+
+// keep[i] = 0 and face[i] >= 0 for the fluid particles whose centre left the domain (the face
+// crossed), keep[i] = 1 and face[i] = -1 for the others.
+struct KeepInsideDomain {
+    particles::ParticleView pv;
+    flow::ExitFaces faces;
+    Index* keep;
+    int* face;
+    DF_HD void operator()(Index i) const {
+        const int f = pv.is_fluid(i) ? faces.of_finite(pv.pos(i)) : -1;
+        face[i] = f;
+        keep[i] = f < 0;
+    }
+};
+
+// Whether item i is dropped (keep[i] = 0).
+struct Dropped {
+    const Index* keep;
+    DF_HD bool operator()(Index i) const { return keep[i] == 0; }
+};
+
+// out[i] = 1 - keep[i].
+struct Complement {
+    const Index* keep;
+    Index* out;
+    DF_HD void operator()(Index i) const { out[i] = 1 - keep[i]; }
+};
+
+// The mass of fluid particle i (0 for walls).
+struct FluidMass {
+    particles::ParticleView pv;
+    DF_HD Real operator()(Index i) const { return pv.is_fluid(i) ? pv.mass[i] : Real(0); }
 };
 
 // Whether sorted position i holds another particle than i (the particles are not in order).
