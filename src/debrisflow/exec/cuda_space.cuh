@@ -34,12 +34,22 @@ template <class F, class T> struct EvaluateInto {
     __device__ void operator()(Index i) const { out[i] = T(f(i)); }
 };
 
-// out[i] = i where bad(i), n otherwise (the minimum is the first bad index).
+// i where bad(i), n otherwise (the minimum is the first bad index).
 template <class F> struct IndexWhere {
     F bad;
     Index n;
-    Index* out;
-    __device__ void operator()(Index i) const { out[i] = bad(i) ? i : n; }
+    __device__ Index operator()(Index i) const { return bad(i) ? i : n; }
+};
+
+// The reductions' operators.
+struct Larger {
+    template <class T> __device__ T operator()(T a, T b) const { return a > b ? a : b; }
+};
+struct Smaller {
+    template <class T> __device__ T operator()(T a, T b) const { return a < b ? a : b; }
+};
+struct Plus {
+    template <class T> __device__ T operator()(T a, T b) const { return a + b; }
 };
 
 struct Iota {
@@ -118,39 +128,15 @@ struct CudaSpace {
         cuda_check(cudaGetLastError(), "kernel launch");
     }
 
-    // max over i of f(i) for f >= 0 (0 for n = 0): f into an array, then CUB's reduction.
+    // max over i of f(i) for f >= 0 (0 for n = 0).
     template <class F> static Real max_of(Index n, const F& f) {
-        if (n <= 0) return 0;
-        auto& s = scratch();
-        s.values.resize(n);
-        for_each(n, cuda_detail::EvaluateInto<F, Real>{f, s.values.data()});
-        std::size_t bytes = 0;
-        cuda_check(cub::DeviceReduce::Max(nullptr, bytes, s.values.data(), s.real_out.data(), n),
-                   "cub::DeviceReduce::Max (size)");
-        s.real_out.resize(1);
-        s.temp.resize(Index(bytes));
-        cuda_check(
-            cub::DeviceReduce::Max(s.temp.data(), bytes, s.values.data(), s.real_out.data(), n),
-            "cub::DeviceReduce::Max");
-        const Real m = s.real_out.at(0);
+        const Real m = reduce<Real>(n, f, cuda_detail::Larger{}, Real(0));
         return m > 0 ? m : Real(0);
     }
 
-    // sum over i of f(i) (0 for n = 0): f into an array, then CUB's reduction.
+    // sum over i of f(i) (0 for n = 0).
     template <class F> static Real sum_of(Index n, const F& f) {
-        if (n <= 0) return 0;
-        auto& s = scratch();
-        s.values.resize(n);
-        for_each(n, cuda_detail::EvaluateInto<F, Real>{f, s.values.data()});
-        std::size_t bytes = 0;
-        s.real_out.resize(1);
-        cuda_check(cub::DeviceReduce::Sum(nullptr, bytes, s.values.data(), s.real_out.data(), n),
-                   "cub::DeviceReduce::Sum (size)");
-        s.temp.resize(Index(bytes));
-        cuda_check(
-            cub::DeviceReduce::Sum(s.temp.data(), bytes, s.values.data(), s.real_out.data(), n),
-            "cub::DeviceReduce::Sum");
-        return s.real_out.at(0);
+        return reduce<Real>(n, f, cuda_detail::Plus{}, Real(0));
     }
 
     // out[i] = in[0] + ... + in[i-1]; returns the total (CUB's scan).
@@ -173,19 +159,7 @@ struct CudaSpace {
 
     // The smallest i with bad(i), or n when there is none.
     template <class F> static Index first_where(Index n, const F& bad) {
-        if (n <= 0) return n;
-        auto& s = scratch();
-        s.indices.resize(n);
-        for_each(n, cuda_detail::IndexWhere<F>{bad, n, s.indices.data()});
-        std::size_t bytes = 0;
-        s.index_out.resize(1);
-        cuda_check(cub::DeviceReduce::Min(nullptr, bytes, s.indices.data(), s.index_out.data(), n),
-                   "cub::DeviceReduce::Min (size)");
-        s.temp.resize(Index(bytes));
-        cuda_check(
-            cub::DeviceReduce::Min(s.temp.data(), bytes, s.indices.data(), s.index_out.data(), n),
-            "cub::DeviceReduce::Min");
-        return s.index_out.at(0);
+        return reduce<Index>(n, cuda_detail::IndexWhere<F>{bad, n}, cuda_detail::Smaller{}, n);
     }
 
     // Sorts the indices 0 .. n-1 stably by their key (keys in [0, key_count)) into order:
@@ -218,11 +192,35 @@ struct CudaSpace {
     static void synchronize() { cuda_check(cudaDeviceSynchronize(), "cudaDeviceSynchronize"); }
 
 private:
+    // op over f(0) .. f(n-1) from init: f into a work array, then CUB's reduction.
+    template <class T, class F, class Op> static T reduce(Index n, const F& f, Op op, T init) {
+        if (n <= 0) return init;
+        auto& s = scratch();
+        auto& values = s.values(T{});
+        auto& out = s.out(T{});
+        values.resize(n);
+        out.resize(1);
+        for_each(n, cuda_detail::EvaluateInto<F, T>{f, values.data()});
+        std::size_t bytes = 0;
+        cuda_check(
+            cub::DeviceReduce::Reduce(nullptr, bytes, values.data(), out.data(), n, op, init),
+            "cub::DeviceReduce::Reduce (size)");
+        s.temp.resize(Index(bytes));
+        cuda_check(
+            cub::DeviceReduce::Reduce(s.temp.data(), bytes, values.data(), out.data(), n, op, init),
+            "cub::DeviceReduce::Reduce");
+        return out.at(0);
+    }
+
     // The reductions' work arrays, kept between calls.
     struct Scratch {
-        Buffer<Real> values, real_out;
-        Buffer<Index> indices, index_out;
+        Buffer<Real> real_values, real_out;
+        Buffer<Index> index_values, index_out;
         Buffer<unsigned char> temp;
+        Buffer<Real>& values(Real) { return real_values; }
+        Buffer<Index>& values(Index) { return index_values; }
+        Buffer<Real>& out(Real) { return real_out; }
+        Buffer<Index>& out(Index) { return index_out; }
     };
     static Scratch& scratch() {
         static Scratch s;
