@@ -60,8 +60,6 @@ struct Iota {
 } // namespace cuda_detail
 
 struct CudaSpace {
-    static constexpr const char* name = "cuda";
-
     // An array in device memory. Grows by reallocation (contents kept); copies to and from the
     // host are explicit.
     template <class T> class Buffer {

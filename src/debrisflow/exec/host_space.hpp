@@ -12,8 +12,6 @@
 namespace debrisflow::exec {
 
 struct HostSpace {
-    static constexpr const char* name = "host";
-
     // An array in this space. Copies to and from the host are explicit (upload, download).
     template <class T> class Buffer {
     public:

@@ -23,8 +23,6 @@ public:
     virtual std::size_t memory_bytes() const = 0;
     // Times the particles were sorted by cell.
     virtual long sorts() const = 0;
-    // "host" or "cuda".
-    virtual const char* space_name() const = 0;
     // Particles held now (the host's set is brought up to date only by publish()).
     virtual Index size() const = 0;
     // Removes the boundary particles of wall group `group` (a gate lifting), where they are.
@@ -37,11 +35,7 @@ public:
         Real mass_in_set = 0;
     };
     virtual Leaving remove_fluid_outside(const flow::ExitFaces& faces) = 0;
-    // Whether a particle left the domain or is not finite (what the host's domain exit and
-    // health check act on), found without copying the particles.
-    virtual bool any_unhealthy() const = 0;
-    // The host's ParticleSet was changed (a gate removed, particles that left taken out, a
-    // checkpoint restored): take it over again now. Call publish() before changing it.
+    // The host's ParticleSet was replaced (a checkpoint restored): take it over again now.
     virtual void reload() = 0;
 };
 
@@ -53,7 +47,7 @@ std::string backend_words(const std::string& backend);
 std::unique_ptr<ResidentPhase> make_resident_sph(const std::string& backend, SphSolver& host,
                                                  const std::string& where);
 
-// Set by a build with the CUDA backend (exec/cuda_instantiations.cu: register_cuda_backend).
+// Set by a build with the CUDA backend (exec/cuda_instantiations.cu: cuda::register_backend).
 // It throws InputError (naming `where`) when the machine has no CUDA device.
 using ResidentFactory = std::unique_ptr<ResidentPhase> (*)(SphSolver&, const std::string& where);
 void set_cuda_factory(ResidentFactory f);

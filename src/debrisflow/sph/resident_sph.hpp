@@ -216,10 +216,6 @@ public:
         return out;
     }
 
-    bool any_unhealthy() const override {
-        return resident_ &&
-               Space::first_where(n_, Unhealthy{ParticleHealthy{view(), host_.domain()}}) < n_;
-    }
     void reload() override {
         resident_ = false;
         upload_once();
@@ -227,7 +223,6 @@ public:
 
     // How many times the particles were sorted by cell.
     long sorts() const override { return sorts_; }
-    const char* space_name() const override { return Space::name; }
 
 private:
     static constexpr std::size_t kReal = 18; // the ParticleView's Real arrays, x .. mu
