@@ -4,6 +4,7 @@
 // the host's threads through exec/parallel.hpp. A loop written against a Space runs on either;
 // the host one is what CI exercises of the device's code path.
 #include "debrisflow/core/real.hpp"
+#include "debrisflow/exec/counting_sort.hpp"
 #include "debrisflow/exec/parallel.hpp"
 #include <algorithm>
 #include <cstddef>
@@ -53,19 +54,18 @@ struct HostSpace {
     }
 
     // Sorts the indices 0 .. n-1 stably by their key (keys in [0, key_count)) into order:
-    // a counting sort, as the host's cell grid does. The keys are left as they were.
+    // the cell grid's counting sort. The keys are left as they were.
     class Sorter {
     public:
         void sort(const Index* keys, Index n, Index key_count, Index* order) {
-            count_.assign(std::size_t(key_count) + 1, 0);
-            for (Index i = 0; i < n; ++i) ++count_[std::size_t(keys[i]) + 1];
-            for (Index c = 0; c < key_count; ++c) count_[c + 1] += count_[c];
-            for (Index i = 0; i < n; ++i) order[count_[keys[i]]++] = i;
+            counting_sort(keys, n, key_count, order, start_, cursor_);
         }
-        std::size_t bytes() const { return count_.capacity() * sizeof(Index); }
+        std::size_t bytes() const {
+            return (start_.capacity() + cursor_.capacity()) * sizeof(Index);
+        }
 
     private:
-        std::vector<Index> count_;
+        std::vector<Index> start_, cursor_;
     };
 
     // Waits until every launched loop has finished (the host's loops return finished).

@@ -1,5 +1,6 @@
 #include "debrisflow/neighbors/cell_grid.hpp"
 #include "debrisflow/core/error.hpp"
+#include "debrisflow/exec/counting_sort.hpp"
 #include "debrisflow/exec/parallel.hpp"
 #include "debrisflow/neighbors/cell_keys_k.hpp"
 #include <cmath>
@@ -58,11 +59,7 @@ void CellGrid::build(const Real* x, const Real* y, const Real* z, Index n, int s
     // Counting sort on the key (cell, or cell and class): stable, so a cell lists its
     // particles in index order.
     const int nk = cell_count() * classes;
-    count_.assign(std::size_t(nk) + 1, 0);
-    for (Index i = 0; i < n; ++i) ++count_[cell_of_[i] + 1];
-    for (int c = 0; c < nk; ++c) count_[c + 1] += count_[c];
-    start_.assign(count_.begin(), count_.end());
-    for (Index i = 0; i < n; ++i) order_[count_[cell_of_[i]]++] = i;
+    exec::counting_sort(cell_of_.data(), n, nk, order_.data(), start_, count_);
     view_.start = start_.data();
     view_.order = order_.data();
     view_.classes = classes;

@@ -60,4 +60,18 @@ template <class Kernel, class Model> struct ApparentViscosity {
     }
 };
 
+// A constant dynamic viscosity mu for fluid particles, 0 for walls (the pair term uses the
+// fluid partner's).
+struct FluidViscosity {
+    particles::ParticleView pv;
+    Real mu;
+    DF_HD void operator()(Index i) const { pv.mu[i] = pv.is_fluid(i) ? mu : Real(0); }
+};
+
+// mu_i / rho_i of a fluid particle (the viscous step limit of a generalised-Newtonian fluid).
+struct FluidKinematicViscosity {
+    particles::ParticleView pv;
+    DF_HD Real operator()(Index i) const { return pv.is_fluid(i) ? pv.mu[i] / pv.rho[i] : Real(0); }
+};
+
 } // namespace debrisflow::sph

@@ -17,6 +17,7 @@
 #include "debrisflow/sph/resident_backend.hpp"
 #include "debrisflow/sph/resident_steps_k.hpp"
 #include "debrisflow/sph/sph_solver.hpp"
+#include "debrisflow/sph/sph_solver_gather.hpp"
 #include "debrisflow/sph/step_limit.hpp"
 #include "debrisflow/sph/time_schemes_k.hpp"
 #include <array>
@@ -62,7 +63,7 @@ public:
         ScopedTimer timer(t_forces_);
         const auto pv = view();
         const SphParams& p = host_.params();
-        const NoSlipWall wall = host_.no_slip_wall();
+        const NoSlipWall wall = host_.no_slip_wall(); // the apparent viscosity's
         Space::for_each(n_, TaitPressure{pv, host_.eos()});
         const auto& m = host_.models();
         std::visit(
@@ -78,16 +79,9 @@ public:
         const auto sps = host_.sps_constants();
         std::visit(
             [&](const auto& kernel, const auto& visc, const auto& diff) {
-                using K = std::decay_t<decltype(kernel)>;
-                using V = std::decay_t<decltype(visc)>;
-                using D = std::decay_t<decltype(diff)>;
                 // pressures, sound speeds and volumes computed where a side is loaded
-                const PairTerms<K, V, D> terms{pv,         kernel,
-                                               visc,       diff,
-                                               nullptr,    nullptr,
-                                               nullptr,    sps_ ? tau_.data() : nullptr,
-                                               wall,       Real(0.01) * p.h * p.h,
-                                               host_.eos()};
+                const auto terms = host_.pair_terms(pv, kernel, visc, diff, nullptr, nullptr,
+                                                    nullptr, sps_ ? tau_.data() : nullptr);
                 Space::for_each(n_, make_gather(terms, grid_, p.gravity, sps.smag, sps.blin,
                                                 sps_ ? tau_next_.data() : nullptr));
             },

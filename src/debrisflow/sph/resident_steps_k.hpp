@@ -1,7 +1,7 @@
 #pragma once
 // The small per-item steps of the resident SPH loop (sph/resident_sph.hpp) that the host
-// solver does with its own containers: the grid's cell starts, reordering, the constant
-// viscosity, and the predicates its reductions look for. Host/device functors.
+// solver does with its own containers: the grid's cell starts, reordering, compaction, and the
+// predicates its reductions look for. Host/device functors.
 #include "debrisflow/flow/exit_faces_k.hpp"
 #include "debrisflow/particles/particle_set.hpp"
 #include "debrisflow/sph/time_schemes_k.hpp"
@@ -102,20 +102,6 @@ struct FluidMass {
 struct OutOfOrder {
     const Index* order;
     DF_HD bool operator()(Index i) const { return order[i] != i; }
-};
-
-// A constant dynamic viscosity mu for fluid particles, 0 for walls (the pair term uses the
-// fluid partner's).
-struct FluidViscosity {
-    particles::ParticleView pv;
-    Real mu;
-    DF_HD void operator()(Index i) const { pv.mu[i] = pv.is_fluid(i) ? mu : Real(0); }
-};
-
-// mu_i / rho_i of a fluid particle (the viscous step limit of a generalised-Newtonian fluid).
-struct FluidKinematicViscosity {
-    particles::ParticleView pv;
-    DF_HD Real operator()(Index i) const { return pv.is_fluid(i) ? pv.mu[i] / pv.rho[i] : Real(0); }
 };
 
 // f(i) >= value (the particle that attains a reduction's maximum).

@@ -147,8 +147,7 @@ void SphSolver::update_viscosity(bool pairs) {
                                        : Real(0);
                     });
             } else {
-                const Real mu = params_.rho0 * visc.kinematic_viscosity();
-                exec::for_each(pv.n, [=](Index i) { pv.mu[i] = pv.is_fluid(i) ? mu : 0; });
+                exec::for_each(pv.n, FluidViscosity{pv, params_.rho0 * visc.kinematic_viscosity()});
             }
         },
         models_.kernel, models_.viscosity);
@@ -161,8 +160,7 @@ Real SphSolver::max_kinematic_viscosity() const {
     if (!apparent)
         return std::visit([](const auto& v) { return v.kinematic_viscosity(); }, models_.viscosity);
     auto pv = const_cast<particles::ParticleSet&>(set_).view();
-    return exec::max_of(pv.n,
-                        [=](Index i) { return pv.is_fluid(i) ? pv.mu[i] / pv.rho[i] : Real(0); });
+    return exec::max_of(pv.n, FluidKinematicViscosity{pv});
 }
 
 void SphSolver::compute_forces() {

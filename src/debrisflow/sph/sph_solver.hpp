@@ -17,6 +17,7 @@ class Archive;
 namespace debrisflow::sph {
 
 struct StepStart;
+template <class Kernel, class Viscosity, class Diffusion> struct PairTerms;
 
 // The axis-aligned simulation box; particles leaving a non-periodic side stop the run.
 // Weakly-compressible SPH phase: DBC boundaries, Tait EOS, selectable kernel, viscosity and
@@ -80,6 +81,13 @@ public:
         Real smag = 0, blin = 0;
     };
     SpsConstants sps_constants() const;
+    // The pair terms of models (K, V, D) on the particles of pv: p / rho^2, c and m / rho read
+    // from the arrays given or, where null, computed where a side is loaded; tau the SPS stress
+    // of the last evaluation or null (sph_solver_gather.hpp).
+    template <class K, class V, class D>
+    PairTerms<K, V, D> pair_terms(const particles::ParticleView& pv, const K& kernel, const V& visc,
+                                  const D& diff, const Real* prho, const Real* cs, const Real* vol,
+                                  const Real* tau) const;
     // Sorts the particles into the cell grid again (after a resident phase has changed them,
     // for the probes that interpolate on the grid).
     void rebuild_grid() { build_grid(); }

@@ -7,6 +7,16 @@
 
 namespace debrisflow::sph {
 
+template <class K, class V, class D>
+PairTerms<K, V, D> SphSolver::pair_terms(const particles::ParticleView& pv, const K& kernel,
+                                         const V& visc, const D& diff, const Real* prho,
+                                         const Real* cs, const Real* vol, const Real* tau) const {
+    // eta2 = 0.01 h^2 regularises 1 / r^2 (Monaghan 1992)
+    return {pv,  kernel, visc, diff,           prho,
+            cs,  vol,    tau,  no_slip_wall(), Real(0.01) * params_.h * params_.h,
+            eos_};
+}
+
 template <class F> void SphSolver::with_pair_terms(F&& f, bool pairs) {
     if (params_.boundary == "mdbc") update_boundary_density();
     update_pressure(pairs);
@@ -17,16 +27,12 @@ template <class F> void SphSolver::with_pair_terms(F&& f, bool pairs) {
     auto pv = set_.view();
     std::visit(
         [&](const auto& kernel, const auto& visc, const auto& diff) {
-            using K = std::decay_t<decltype(kernel)>;
-            using V = std::decay_t<decltype(visc)>;
-            using D = std::decay_t<decltype(diff)>;
             // The half list reads p / rho^2, c and m / rho from arrays; the gather computes
             // them where it loads a particle (no arrays: less memory, as on a device).
             const bool arrays = pairs;
-            f(PairTerms<K, V, D>{pv, kernel, visc, diff, arrays ? prho_.data() : nullptr,
-                                 arrays ? cs_.data() : nullptr, arrays ? vol_.data() : nullptr,
-                                 sps ? set_.sps_tau.data() : nullptr, no_slip_wall(),
-                                 Real(0.01) * params_.h * params_.h, eos_});
+            f(pair_terms(pv, kernel, visc, diff, arrays ? prho_.data() : nullptr,
+                         arrays ? cs_.data() : nullptr, arrays ? vol_.data() : nullptr,
+                         sps ? set_.sps_tau.data() : nullptr));
         },
         models_.kernel, models_.viscosity, models_.diffusion);
 }
