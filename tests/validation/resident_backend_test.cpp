@@ -101,6 +101,20 @@ TEST(ResidentBackend, GateAndDomainExit) {
     check("cases/validation/gate_exit2d.toml", {"output.vtk=false"}, 0.6, 0.01, 1000);
 }
 
+// The gate case fed by an inlet and drained by an outlet: the buffer's state prescribed and
+// its new layers appended where the particles are (ids claimed from the host's set), the
+// outlet's fluid removed by stream compaction and its masses tallied on the host. The inlet's
+// and outlet's probes (mass in, mass out) are among the probes compared.
+TEST(ResidentBackend, GateInletOutlet) {
+    check("cases/validation/gate_inlet_outlet2d.toml", {"output.vtk=false"}, 0.6, 0.01, 1000);
+}
+
+// The same with the Verlet scheme (the buffer's state at t_n-1 prescribed and appended too).
+TEST(ResidentBackend, InletOutletVerlet) {
+    check("cases/validation/gate_inlet_outlet2d.toml",
+          {"output.vtk=false", "time.scheme=\"verlet\""}, 0.3, 0.01, 1000);
+}
+
 // The demo case (Lobovsky dam break) with the Verlet scheme: the state at t_n-1 resident too.
 TEST(ResidentBackend, DamBreakVerlet) {
     check("cases/dambreak2d.toml", {"dp=0.015", "time.scheme=\"verlet\"", "output.vtk=false"}, 0.3,

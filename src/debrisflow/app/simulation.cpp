@@ -234,13 +234,23 @@ RunReport Simulation::run(const RunOptions& opt) {
     // Open boundaries act between the integration and the neighbour search of each step.
     if (!inlets_.empty() || !outlets_.empty() || !feeds_.empty() || !rock_feeds_.empty())
         integ.add_hook(time::Hook::after_integration, [this](const time::StepInfo& s) {
-            for (auto& in : inlets_) in->apply(set_, s.t, s.dt);
+            for (auto& in : inlets_) {
+                if (resident_) { // where the particles are
+                    resident_->prescribe(in->buffer(s.t));
+                    resident_->append(in->new_layers(s.t, s.dt));
+                } else {
+                    in->apply(set_, s.t, s.dt);
+                }
+            }
             for (auto& f : feeds_) f->apply(*dem_, s.t, s.dt);
             for (auto& f : rock_feeds_)
                 f->apply(*rigid_, dem_ ? &grains_ : nullptr, solver_ ? &set_ : nullptr, s.t, s.dt);
             for (auto& out : outlets_) {
                 const long before = out->bodies_removed();
-                out->apply(solver_.get(), dem_.get(), rigid_.get());
+                if (resident_) // fluid only (require_backend_supports)
+                    out->tally_fluid(resident_->remove_fluid_inside(out->box()).mass);
+                else
+                    out->apply(solver_.get(), dem_.get(), rigid_.get());
                 if (out->bodies_removed() > before)
                     log_.line(fmt::format("t = {:.6g} s: {} rigid bod{} left through outlet '{}' "
                                           "({} in all, {:.4g} kg)",

@@ -60,8 +60,8 @@ struct Iota {
 } // namespace cuda_detail
 
 struct CudaSpace {
-    // An array in device memory. Grows by reallocation (contents kept); copies to and from the
-    // host are explicit.
+    // An array in device memory. Grows by reallocation with an eighth to spare (appends come
+    // in layers), contents kept; copies to and from the host are explicit.
     template <class T> class Buffer {
     public:
         Buffer() = default;
@@ -73,15 +73,16 @@ struct CudaSpace {
         Index size() const { return n_; }
         void resize(Index n) {
             if (n > cap_) {
+                const Index cap = n_ > 0 ? n + n / 8 : n;
                 T* q = nullptr;
-                cuda_check(cudaMalloc(&q, std::size_t(n) * sizeof(T)), "cudaMalloc");
+                cuda_check(cudaMalloc(&q, std::size_t(cap) * sizeof(T)), "cudaMalloc");
                 if (n_ > 0)
                     cuda_check(
                         cudaMemcpy(q, p_, std::size_t(n_) * sizeof(T), cudaMemcpyDeviceToDevice),
                         "cudaMemcpy (grow)");
                 cudaFree(p_);
                 p_ = q;
-                cap_ = n;
+                cap_ = cap;
             }
             n_ = n;
         }
@@ -95,6 +96,13 @@ struct CudaSpace {
             if (n > 0)
                 cuda_check(cudaMemcpy(p_, src, std::size_t(n) * sizeof(T), cudaMemcpyHostToDevice),
                            "cudaMemcpy (upload)");
+        }
+        // Copies n values from the host to [offset, offset + n) (inside the size).
+        void upload_at(Index offset, const T* src, Index n) {
+            if (n > 0)
+                cuda_check(cudaMemcpy(p_ + offset, src, std::size_t(n) * sizeof(T),
+                                      cudaMemcpyHostToDevice),
+                           "cudaMemcpy (upload_at)");
         }
         void download(T* dst) const {
             if (n_ > 0)

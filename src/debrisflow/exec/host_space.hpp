@@ -19,9 +19,19 @@ struct HostSpace {
         T* data() { return v_.data(); }
         const T* data() const { return v_.data(); }
         Index size() const { return Index(v_.size()); }
-        void resize(Index n) { v_.resize(std::size_t(n)); }
+        // Grows with an eighth to spare (appends come in layers), contents kept; the first
+        // allocation is exact.
+        void resize(Index n) {
+            const std::size_t m = std::size_t(n);
+            if (m > v_.capacity()) v_.reserve(v_.empty() ? m : m + m / 8);
+            v_.resize(m);
+        }
         void clear() { std::vector<T>().swap(v_); }
         void upload(const T* src, Index n) { v_.assign(src, src + n); }
+        // Copies n values from the host to [offset, offset + n) (inside the size).
+        void upload_at(Index offset, const T* src, Index n) {
+            std::copy(src, src + n, v_.begin() + offset);
+        }
         void download(T* dst) const { std::copy(v_.begin(), v_.end(), dst); }
         void swap(Buffer& o) { v_.swap(o.v_); }
         T at(Index i) const { return v_[std::size_t(i)]; } // one element, copied to the host

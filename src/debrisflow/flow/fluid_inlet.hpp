@@ -1,5 +1,6 @@
 #pragma once
 #include "debrisflow/flow/hydrograph.hpp"
+#include "debrisflow/flow/inlet_buffer_k.hpp"
 #include "debrisflow/io/case_spec.hpp"
 #include "debrisflow/models/eos_tait_k.hpp"
 #include "debrisflow/particles/particle_set.hpp"
@@ -20,8 +21,13 @@ public:
     FluidInlet(const io::InletSpec& spec, const io::CaseSpec& c);
 
     // After each step: prescribes the buffer state at time t and adds layers for the advance
-    // of the last dt.
+    // of the last dt (buffer(t), then new_layers(t, dt)).
     void apply(particles::ParticleSet& set, Real t, Real dt);
+    // The buffer's prescribed state at time t (flow/inlet_buffer_k.hpp).
+    InletBuffer buffer(Real t) const;
+    // The lattice layers that enter behind the upstream one for the advance of the last dt,
+    // counted in mass_in and volume_in.
+    std::vector<particles::NewParticle> new_layers(Real t, Real dt);
 
     const std::string& name() const { return spec_.name; }
     Real discharge(Real t) const { return q_.at(t); } // [m^3/s] (2D: m^2/s)
@@ -34,8 +40,7 @@ public:
     void state(checkpoint::Archive& ar); // totals and the layer advance (flow/flow_state.cpp)
 
 private:
-    void add_layer(particles::ParticleSet& set, Real along, Real t);
-    Real density_at(Real z) const;
+    void add_layer(std::vector<particles::NewParticle>& out, Real along, Real t);
 
     io::InletSpec spec_;
     Hydrograph q_;

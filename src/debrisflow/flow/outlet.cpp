@@ -5,22 +5,28 @@
 
 namespace debrisflow::flow {
 
+void Outlet::tally_fluid(const std::vector<Real>& masses) {
+    for (const Real m : masses) {
+        fluid_mass_ += m;
+        fluid_volume_ += m / rho0_;
+    }
+}
+
 void Outlet::apply(sph::SphSolver* fluid, dem::DemSolver* grains, rigid::BodySolver* bodies) {
     if (fluid) {
         auto& s = fluid->particles();
         const Index n = s.size();
         std::vector<std::uint8_t> keep(std::size_t(n), 1);
-        bool any = false;
+        std::vector<Real> removed;
         for (Index i = 0; i < n; ++i) {
             if (s.kind[i] != std::uint8_t(particles::Kind::fluid) ||
                 !inside(s.x[i], s.y[i], s.z[i]))
                 continue;
             keep[std::size_t(i)] = 0;
-            any = true;
-            fluid_mass_ += s.mass[i];
-            fluid_volume_ += s.mass[i] / rho0_;
+            removed.push_back(s.mass[i]);
         }
-        if (any) fluid->remove_particles(keep);
+        tally_fluid(removed);
+        if (!removed.empty()) fluid->remove_particles(keep);
     }
     if (grains) {
         auto& g = grains->grains();

@@ -1,5 +1,7 @@
 #pragma once
+#include "debrisflow/flow/outlet_box_k.hpp"
 #include "debrisflow/io/case_spec.hpp"
+#include <vector>
 
 namespace debrisflow::sph {
 class SphSolver;
@@ -29,6 +31,11 @@ public:
     // Removes what is inside now (any solver may be null).
     void apply(sph::SphSolver* fluid, dem::DemSolver* grains, rigid::BodySolver* bodies);
 
+    // Counts fluid removed elsewhere (a resident phase's, in its index order): the masses of
+    // the particles that were inside.
+    void tally_fluid(const std::vector<Real>& masses);
+    OutletBox box() const { return {spec_.min, spec_.max}; }
+
     const std::string& name() const { return spec_.name; }
     Real fluid_mass() const { return fluid_mass_; }     // [kg] (2D: kg/m)
     Real fluid_volume() const { return fluid_volume_; } // [m^3] (2D: m^2)
@@ -40,10 +47,7 @@ public:
     void state(checkpoint::Archive& ar); // totals removed (flow/flow_state.cpp)
 
 private:
-    bool inside(Real x, Real y, Real z) const {
-        return x >= spec_.min.x && x <= spec_.max.x && y >= spec_.min.y && y <= spec_.max.y &&
-               z >= spec_.min.z && z <= spec_.max.z;
-    }
+    bool inside(Real x, Real y, Real z) const { return box().contains({x, y, z}); }
     io::OutletSpec spec_;
     Real rho0_;
     Real fluid_mass_ = 0, fluid_volume_ = 0, grain_mass_ = 0, grain_volume_ = 0, body_mass_ = 0;

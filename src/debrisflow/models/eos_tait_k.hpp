@@ -28,7 +28,7 @@ struct TaitEos {
         return c0 * std::pow(r, Real(0.5) * (gamma - 1));
     }
     // Density that gives pressure p (inverse of pressure()).
-    Real density(Real p) const { return rho0 * std::pow(1 + p / b, 1 / gamma); }
+    DF_HD Real density(Real p) const { return rho0 * std::pow(1 + p / b, 1 / gamma); }
 };
 
 } // namespace debrisflow::models

@@ -31,6 +31,14 @@ struct ParticleView {
 };
 static_assert(std::is_trivially_copyable_v<ParticleView>);
 
+// A particle about to be added (an inlet's new layer).
+struct NewParticle {
+    Vec3 pos, vel;
+    Real rho, mass;
+    Kind kind;
+    std::int16_t group;
+};
+
 // Structure-of-arrays SPH particle storage. `group` is the index of the fluid body or the
 // wall a particle was created from; `id` is persistent across reordering and removal.
 class ParticleSet {
@@ -52,6 +60,14 @@ public:
     Index count(Kind k) const;
 
     void add(Vec3 pos, Vec3 vel, Real density, Real m, Kind k, std::int16_t grp);
+    void add(const NewParticle& q) { add(q.pos, q.vel, q.rho, q.mass, q.kind, q.group); }
+    // Hands out `count` new persistent ids (for particles added elsewhere: a resident phase's)
+    // and returns the first.
+    ParticleId claim_ids(Index count) {
+        const ParticleId first = next_id_;
+        next_id_ += ParticleId(count);
+        return first;
+    }
     // Wall normal (into the fluid) and depth behind the wall surface of boundary particle i.
     void set_wall(Index i, Vec3 normal, Real depth);
 

@@ -6,6 +6,8 @@
 // - "cuda": the resident loop in a CUDA device's memory (a build configured with
 //   DEBRISFLOW_CUDA; exec/cuda_space.cuh).
 #include "debrisflow/flow/exit_faces_k.hpp"
+#include "debrisflow/flow/inlet_buffer_k.hpp"
+#include "debrisflow/flow/outlet_box_k.hpp"
 #include "debrisflow/time/phase.hpp"
 #include <cstddef>
 #include <memory>
@@ -35,6 +37,14 @@ public:
         Real mass_in_set = 0;
     };
     virtual Leaving remove_fluid_outside(const flow::ExitFaces& faces) = 0;
+    // Removes the fluid particles inside an outlet's box, where they are; says which left
+    // (index order: their masses; no faces, no mass held).
+    virtual Leaving remove_fluid_inside(const flow::OutletBox& box) = 0;
+    // Prescribes the state of the fluid inside an inlet's buffer, where the particles are.
+    virtual void prescribe(const flow::InletBuffer& buffer) = 0;
+    // Appends particles (an inlet's new layers) after the last, with ids claimed from the
+    // host's set, as ParticleSet::add would.
+    virtual void append(const std::vector<particles::NewParticle>& fresh) = 0;
     // The host's ParticleSet was replaced (a checkpoint restored): take it over again now.
     virtual void reload() = 0;
 };

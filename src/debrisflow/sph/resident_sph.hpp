@@ -77,6 +77,7 @@ public:
             },
             m.kernel, m.viscosity);
         const auto sps = host_.sps_constants();
+        if (sps_) tau_next_.resize(6 * n_); // appended particles
         std::visit(
             [&](const auto& kernel, const auto& visc, const auto& diff) {
                 // pressures, sound speeds and volumes computed where a side is loaded
@@ -182,32 +183,59 @@ public:
     }
 
     Leaving remove_fluid_outside(const flow::ExitFaces& faces) override {
-        Leaving out;
-        const auto pv = view();
+        upload_once();
         keep_.resize(n_);
         face_.resize(n_);
-        Space::for_each(n_, KeepInsideDomain{pv, faces, keep_.data(), face_.data()});
-        if (Space::first_where(n_, Dropped{keep_.data()}) == n_) return out; // none left
-        out.mass_in_set = Space::sum_of(n_, FluidMass{pv});
-        // the leavers' faces and masses, gathered in index order and copied to the host
-        leave_.resize(n_);
-        pos_.resize(n_);
-        Space::for_each(n_, Complement{keep_.data(), leave_.data()});
-        const Index m = Space::exclusive_scan(n_, leave_.data(), pos_.data());
-        Buffer<int> faces_out;
-        Buffer<Real> mass_out;
-        faces_out.resize(m);
-        mass_out.resize(m);
-        Space::for_each(
-            n_, ScatterKept<int>{face_.data(), leave_.data(), pos_.data(), faces_out.data(), 1});
-        Space::for_each(n_,
-                        ScatterKept<Real>{pv.mass, leave_.data(), pos_.data(), mass_out.data(), 1});
-        out.face.resize(std::size_t(m));
-        out.mass.resize(std::size_t(m));
-        faces_out.download(out.face.data());
-        mass_out.download(out.mass.data());
-        compact();
-        return out;
+        Space::for_each(n_, KeepInsideDomain{view(), faces, keep_.data(), face_.data()});
+        return remove_leavers(true);
+    }
+
+    Leaving remove_fluid_inside(const flow::OutletBox& box) override {
+        upload_once();
+        keep_.resize(n_);
+        Space::for_each(n_, KeepOutsideBox{view(), box, keep_.data()});
+        return remove_leavers(false);
+    }
+
+    void prescribe(const flow::InletBuffer& buffer) override {
+        upload_once();
+        const bool old = set_.keeps_previous_state();
+        Space::for_each(n_, flow::PrescribeBuffer{buffer, view(), old ? old_[0].data() : nullptr,
+                                                  old ? old_[1].data() : nullptr,
+                                                  old ? old_[2].data() : nullptr,
+                                                  old ? old_[3].data() : nullptr});
+        Space::synchronize();
+    }
+
+    // The new particles' arrays as ParticleSet::add fills them, each uploaded after the last.
+    void append(const std::vector<particles::NewParticle>& fresh) override {
+        upload_once();
+        const Index k = Index(fresh.size());
+        if (k == 0) return;
+        std::array<std::vector<Real>, kReal> real;
+        for (auto& column : real) column.assign(std::size_t(k), Real(0));
+        std::vector<std::uint8_t> kind(fresh.size());
+        std::vector<std::int16_t> group(fresh.size());
+        std::vector<ParticleId> id(fresh.size());
+        const ParticleId first = set_.claim_ids(k);
+        for (std::size_t j = 0; j < fresh.size(); ++j) {
+            const auto& q = fresh[j];
+            real[0][j] = q.pos.x, real[1][j] = q.pos.y, real[2][j] = q.pos.z;
+            real[3][j] = q.vel.x, real[4][j] = q.vel.y, real[5][j] = q.vel.z;
+            real[9][j] = q.rho, real[12][j] = q.mass;
+            kind[j] = std::uint8_t(q.kind);
+            group[j] = q.group;
+            id[j] = first + ParticleId(j);
+        }
+        for (std::size_t f = 0; f < kReal; ++f) append_tail(real_[f], real[f], 1);
+        if (set_.keeps_previous_state())
+            for (std::size_t f = 0; f < old_.size(); ++f) // vx, vy, vz, rho at t_n-1
+                append_tail(old_[f], real[f < 3 ? 3 + f : 9], 1);
+        if (sps_) append_tail(tau_, std::vector<Real>(6 * std::size_t(k), Real(0)), 6);
+        append_tail(kind_, kind, 1);
+        append_tail(group_, group, 1);
+        append_tail(id_, id, 1);
+        n_ += k;
     }
 
     void reload() override {
@@ -321,6 +349,37 @@ private:
         scratch.resize(width * n_);
         Space::for_each(n_, GatherByOrder<T>{a.data(), order_.data(), scratch.data(), width});
         a.swap(scratch);
+    }
+
+    // Copies the leavers (keep_[i] = 0) to the host in index order (their masses, and the
+    // faces in face_ when `faces`), then removes them.
+    Leaving remove_leavers(bool faces) {
+        Leaving out;
+        const auto pv = view();
+        if (Space::first_where(n_, Dropped{keep_.data()}) == n_) return out; // none left
+        if (faces) out.mass_in_set = Space::sum_of(n_, FluidMass{pv});
+        leave_.resize(n_);
+        pos_.resize(n_);
+        Space::for_each(n_, Complement{keep_.data(), leave_.data()});
+        const Index m = Space::exclusive_scan(n_, leave_.data(), pos_.data());
+        out.mass = gather_leavers(pv.mass, m);
+        if (faces) out.face = gather_leavers(face_.data(), m);
+        compact();
+        return out;
+    }
+    template <class T> std::vector<T> gather_leavers(const T* values, Index m) {
+        Buffer<T> picked;
+        picked.resize(m);
+        Space::for_each(n_, ScatterKept<T>{values, leave_.data(), pos_.data(), picked.data(), 1});
+        std::vector<T> out(static_cast<std::size_t>(m));
+        picked.download(out.data());
+        return out;
+    }
+
+    // Appends `width` values per new particle after the n_ particles held.
+    template <class T> void append_tail(Buffer<T>& b, const std::vector<T>& tail, int width) {
+        b.resize(width * n_ + Index(tail.size()));
+        b.upload_at(width * n_, tail.data(), Index(tail.size()));
     }
 
     // Keeps the particles with keep_[i] = 1, in order (stream compaction: an exclusive scan of

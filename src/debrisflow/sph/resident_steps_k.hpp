@@ -3,6 +3,7 @@
 // solver does with its own containers: the grid's cell starts, reordering, compaction, and the
 // predicates its reductions look for. Host/device functors.
 #include "debrisflow/flow/exit_faces_k.hpp"
+#include "debrisflow/flow/outlet_box_k.hpp"
 #include "debrisflow/particles/particle_set.hpp"
 #include "debrisflow/sph/time_schemes_k.hpp"
 #include <type_traits>
@@ -77,6 +78,14 @@ struct KeepInsideDomain {
         face[i] = f;
         keep[i] = f < 0;
     }
+};
+
+// keep[i] = 0 for the fluid particles inside an outlet's box, 1 otherwise.
+struct KeepOutsideBox {
+    particles::ParticleView pv;
+    flow::OutletBox box;
+    Index* keep;
+    DF_HD void operator()(Index i) const { keep[i] = !(pv.is_fluid(i) && box.contains(pv.pos(i))); }
 };
 
 // Whether item i is dropped (keep[i] = 0).
