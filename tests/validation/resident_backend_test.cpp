@@ -115,6 +115,26 @@ TEST(ResidentBackend, InletOutletVerlet) {
           {"output.vtk=false", "time.scheme=\"verlet\""}, 0.3, 0.01, 1000);
 }
 
+// A floating box (Archimedes draft): the body's fluid force and moment reduced where the
+// particles are (sorted by body, a segmented sum in index order), the 6-DOF update on the host,
+// the box's particles moved where they are. The body probe is among the probes compared.
+TEST(ResidentBackend, FloatingBox) {
+    check("cases/rigid/floating_box2d.toml", {"output.vtk=false"}, 0.3, 0.01, 1000);
+}
+
+// Three bodies (a sphere, a clump and a block) in a 3D dam break at a coarse dp, the reservoir
+// lengthened to the sphere and the bodies moved closer, so that within 0.1 s the sphere and the
+// clump are hit, roll and turn while the block still rests: the loads of several bodies
+// reduced in one segmented sum, their contacts with the walls on the host.
+TEST(ResidentBackend, BouldersDamBreak3D) {
+    check("cases/rigid/boulders_dambreak.toml",
+          {"dp=0.04", "output.vtk=false", "fluid.0.max=[1.3,0.4,0.5]", "wall.1.min=[1.3,0.0,0.0]",
+           "wall.1.max=[1.36,0.4,0.7]",
+           "body.1.spheres=[[1.50,0.12,0.05,0.05],[1.57,0.15,0.06,0.06],[1.63,0.2,0.045,0.045]]",
+           "body.2.min=[1.70,0.22,0.0]", "body.2.max=[1.84,0.32,0.08]"},
+          0.1, 0.04, 1000);
+}
+
 // The demo case (Lobovsky dam break) with the Verlet scheme: the state at t_n-1 resident too.
 TEST(ResidentBackend, DamBreakVerlet) {
     check("cases/dambreak2d.toml", {"dp=0.015", "time.scheme=\"verlet\"", "output.vtk=false"}, 0.3,

@@ -54,6 +54,7 @@ Simulation::Simulation(io::CaseSpec spec)
         if (solver_)
             sph_body_ = std::make_unique<coupling::SphBodyCoupling>(
                 *rigid_, set_, scenario::body_particles(bodies, first_body_particle));
+        if (resident_ && sph_body_) resident_->couple_bodies(*rigid_, *sph_body_);
     }
     if (dem_fem_) dem_fem_->connect(rigid_.get());
     if (spec_.has_dem) {

@@ -1,4 +1,5 @@
 #include "debrisflow/coupling/sph_body.hpp"
+#include "debrisflow/coupling/sph_body_k.hpp"
 #include "debrisflow/exec/parallel.hpp"
 #include "debrisflow/rigid/body_solver.hpp"
 
@@ -39,13 +40,13 @@ void SphBodyCoupling::refresh() {
 void SphBodyCoupling::add_loads(const std::vector<rigid::BodyState>& bodies,
                                 std::vector<rigid::BodyLoads>& loads) {
     refresh();
+    const auto pv = set_.view();
     for (std::size_t k = 0; k < members_.size(); ++k) {
         const Index i = members_[k];
         const int b = rows_.owner[member_rows_[k]];
-        const Vec3 f = set_.mass[i] * Vec3{set_.ax[i], set_.ay[i], set_.az[i]};
-        const Vec3 x{set_.x[i], set_.y[i], set_.z[i]};
-        loads[std::size_t(b)].fluid_force += f;
-        loads[std::size_t(b)].fluid_torque += cross(x - bodies[std::size_t(b)].pos, f);
+        const Wrench w = particle_load(pv, i, bodies[std::size_t(b)].pos);
+        loads[std::size_t(b)].fluid_force += w.force;
+        loads[std::size_t(b)].fluid_torque += w.torque;
     }
 }
 
@@ -59,19 +60,8 @@ void SphBodyCoupling::follow(const std::vector<rigid::BodyState>& bodies, bool p
     const Vec3 *off = rows_.offset.data(), *nrm = rows_.normal.data();
     const rigid::BodyState* bs = bodies.data();
     exec::for_each(Index(members_.size()), [=](Index k) {
-        const Index i = mem[k];
         const std::size_t r = rows[k];
-        const rigid::BodyState& b = bs[owner[r]];
-        const Vec3 arm = rigid::rotate(b.q, off[r]);
-        if (positions) {
-            pv.x[i] = b.pos.x + arm.x;
-            pv.y[i] = b.pos.y + arm.y;
-            pv.z[i] = b.pos.z + arm.z;
-            const Vec3 n = rigid::rotate(b.q, nrm[r]);
-            pv.wnx[i] = n.x, pv.wny[i] = n.y, pv.wnz[i] = n.z; // into the fluid
-        }
-        const Vec3 v = b.vel + cross(b.omega(), arm);
-        pv.vx[i] = v.x, pv.vy[i] = v.y, pv.vz[i] = v.z;
+        place_on_body(pv, mem[k], bs[owner[r]], off[r], nrm[r], positions);
     });
 }
 

@@ -62,6 +62,10 @@ public:
     void release(int b, std::vector<std::uint8_t>& keep) override;
     std::size_t particles_of(int b) const override;
 
+    // The body particles' rows (a resident backend takes them over: sph/resident_bodies.hpp).
+    const BodyParticles& rows() const { return rows_; }
+    std::size_t initial_rows() const { return initial_rows_; }
+
     // Saves or restores the rows (those of bodies added during the run included)
     // (coupling/coupling_checkpoint.cpp).
     void state(checkpoint::Archive& ar);

@@ -8,6 +8,7 @@
 #include <cub/device/device_radix_sort.cuh>
 #include <cub/device/device_reduce.cuh>
 #include <cub/device/device_scan.cuh>
+#include <cub/device/device_segmented_reduce.cuh>
 #include <cuda_runtime.h>
 #include <stdexcept>
 #include <string>
@@ -161,6 +162,22 @@ struct CudaSpace {
         cuda_check(cudaMemcpy(&last_out, out + n - 1, sizeof(Index), cudaMemcpyDeviceToHost),
                    "cudaMemcpy (scan)");
         return last_out + last_in;
+    }
+
+    // out[s] = in[start[s]] + ... + in[start[s+1]-1] for each segment s in [0, segments)
+    // (CUB's segmented reduction; its order of summation is CUB's).
+    template <class T>
+    static void segmented_sum(Index segments, const Index* start, const T* in, T* out) {
+        if (segments <= 0) return;
+        auto& s = scratch();
+        std::size_t bytes = 0;
+        cuda_check(cub::DeviceSegmentedReduce::Reduce(nullptr, bytes, in, out, segments, start,
+                                                      start + 1, cuda_detail::Plus{}, T{}),
+                   "cub::DeviceSegmentedReduce::Reduce (size)");
+        s.temp.resize(Index(bytes));
+        cuda_check(cub::DeviceSegmentedReduce::Reduce(s.temp.data(), bytes, in, out, segments,
+                                                      start, start + 1, cuda_detail::Plus{}, T{}),
+                   "cub::DeviceSegmentedReduce::Reduce");
     }
 
     // The smallest i with bad(i), or n when there is none.

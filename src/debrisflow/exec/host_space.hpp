@@ -56,6 +56,17 @@ struct HostSpace {
             n, [=](Index i) { return in[i]; }, out);
     }
 
+    // out[s] = in[start[s]] + ... + in[start[s+1]-1] for each segment s in [0, segments),
+    // summed in order from T{} (each segment on one thread: the host's order of a serial sum).
+    template <class T>
+    static void segmented_sum(Index segments, const Index* start, const T* in, T* out) {
+        exec::for_each(segments, [=](Index s) {
+            T sum{};
+            for (Index k = start[s]; k < start[s + 1]; ++k) sum = sum + in[k];
+            out[s] = sum;
+        });
+    }
+
     // The smallest i with bad(i), or n when there is none.
     template <class F> static Index first_where(Index n, const F& bad) {
         return exec::reduce(

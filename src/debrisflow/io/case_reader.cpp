@@ -193,21 +193,23 @@ CaseSpec read_case(const std::string& path, const std::vector<std::string>& over
 namespace {
 
 // What the resident backends (exec.backend = "host_resident" or "cuda") run so far: fluid and
-// walls (fixed, moving, removed by remove_at), inlets and outlets, domain exit, DBC, every
-// kernel, viscosity and diffusion model, both time schemes. Anything else is rejected here, so that
+// walls (fixed, moving, removed by remove_at), inlets and outlets, domain exit, rigid bodies
+// built before the run (their 6-DOF update on the host), DBC, every kernel, viscosity and
+// diffusion model, both time schemes. Anything else is rejected here, so that
 // `check` rejects it too.
 void require_backend_supports(const CaseSpec& c) {
     if (c.backend == "host") return;
     const auto no = [&](bool present, const std::string& what) {
         if (present)
-            throw InputError(fmt::format("{}: exec.backend = \"{}\" runs fluid, walls, inlets and "
-                                         "outlets only so "
-                                         "far; this case has {} (use exec.backend = \"host\")",
+            throw InputError(fmt::format("{}: exec.backend = \"{}\" runs fluid, walls, inlets, "
+                                         "outlets and rigid bodies only so far; this case has {} "
+                                         "(use exec.backend = \"host\")",
                                          c.exec_origin.at("backend"), c.backend, what));
     };
     no(c.fluids.empty(), "no fluid");
     no(c.has_dem, "grains ([dem])");
-    no(c.has_bodies(), "rigid bodies");
+    no(!c.rigid.feeds.empty(), "a rock feed");
+    no(c.has_bodies() && !c.outlets.empty(), "rigid bodies and an outlet");
     no(c.has_fem(), "FEM solids");
     no(c.sph.boundary != "dbc", "sph.boundary = \"" + c.sph.boundary + "\" (DBC only)");
     no(c.sph.no_slip != "morris", "sph.no_slip = \"" + c.sph.no_slip + "\"");

@@ -14,6 +14,13 @@
 #include <string>
 #include <vector>
 
+namespace debrisflow::coupling {
+class SphBodyCoupling;
+}
+namespace debrisflow::rigid {
+class BodySolver;
+}
+
 namespace debrisflow::sph {
 
 class SphSolver;
@@ -45,6 +52,10 @@ public:
     // Appends particles (an inlet's new layers) after the last, with ids claimed from the
     // host's set, as ParticleSet::add would.
     virtual void append(const std::vector<particles::NewParticle>& fresh) = 0;
+    // Becomes the bodies' fluid side (before the run): their fluid loads reduced and their
+    // particles moved where the particles are (sph/resident_bodies.hpp).
+    virtual void couple_bodies(rigid::BodySolver& bodies,
+                               const coupling::SphBodyCoupling& coupling) = 0;
     // The host's ParticleSet was replaced (a checkpoint restored): take it over again now.
     virtual void reload() = 0;
 };

@@ -12,15 +12,18 @@
 #include "debrisflow/core/stopwatch.hpp"
 #include "debrisflow/neighbors/cell_grid.hpp"
 #include "debrisflow/neighbors/cell_keys_k.hpp"
+#include "debrisflow/rigid/body_solver.hpp"
 #include "debrisflow/sph/apparent_viscosity_k.hpp"
 #include "debrisflow/sph/interaction_k.hpp"
 #include "debrisflow/sph/resident_backend.hpp"
+#include "debrisflow/sph/resident_bodies.hpp"
 #include "debrisflow/sph/resident_steps_k.hpp"
 #include "debrisflow/sph/sph_solver.hpp"
 #include "debrisflow/sph/sph_solver_gather.hpp"
 #include "debrisflow/sph/step_limit.hpp"
 #include "debrisflow/sph/time_schemes_k.hpp"
 #include <array>
+#include <memory>
 #include <type_traits>
 #include <variant>
 
@@ -28,6 +31,7 @@ namespace debrisflow::sph {
 
 template <class Space> class ResidentSph final : public ResidentPhase {
     template <class T> using Buffer = typename Space::template Buffer<T>;
+    friend class ResidentBodies<Space>;
 
 public:
     // Takes over the host solver's particles at the first neighbour search; the host solver
@@ -172,6 +176,7 @@ public:
         for (const auto& a : real_) b += a.bytes();
         for (const auto& a : old_) b += a.bytes();
         for (const auto& a : start_) b += a.bytes();
+        if (bodies_) b += row_.bytes() + scratch_row_.bytes() + bodies_->bytes();
         return b;
     }
     Index size() const override { return resident_ ? n_ : set_.size(); }
@@ -235,7 +240,16 @@ public:
         append_tail(kind_, kind, 1);
         append_tail(group_, group, 1);
         append_tail(id_, id, 1);
+        if (bodies_) append_tail(row_, std::vector<std::int32_t>(fresh.size(), -1), 1);
+        ++layout_;
         n_ += k;
+    }
+
+    void couple_bodies(rigid::BodySolver& bodies,
+                       const coupling::SphBodyCoupling& coupling) override {
+        if (resident_) throw std::logic_error("resident SPH: bodies are coupled before the run");
+        bodies_ = std::make_unique<ResidentBodies<Space>>(*this, coupling);
+        bodies.attach_fluid(bodies_.get());
     }
 
     void reload() override {
@@ -284,6 +298,8 @@ private:
         upload(kind_, set_.kind);
         upload(group_, set_.group);
         upload(id_, set_.id);
+        if (bodies_) upload(row_, bodies_->rows_of(set_.id));
+        ++layout_;
         keys_.resize(n_);
         order_.resize(n_);
         start_cells_.resize(keys_count_ + 1);
@@ -344,6 +360,8 @@ private:
         gather(kind_, scratch_kind_, 1);
         gather(group_, scratch_group_, 1);
         gather(id_, scratch_id_, 1);
+        if (bodies_) gather(row_, scratch_row_, 1);
+        ++layout_;
     }
     template <class T> void gather(Buffer<T>& a, Buffer<T>& scratch, int width) {
         scratch.resize(width * n_);
@@ -398,6 +416,8 @@ private:
         scatter(kind_, scratch_kind_, 1, m);
         scatter(group_, scratch_group_, 1, m);
         scatter(id_, scratch_id_, 1, m);
+        if (bodies_) scatter(row_, scratch_row_, 1, m);
+        ++layout_;
         n_ = m;
         Space::synchronize();
     }
@@ -447,6 +467,10 @@ private:
     Buffer<Index> keys_, order_, start_cells_;
     Buffer<Index> keep_, leave_, pos_; // stream compaction: flags and their scan
     Buffer<int> face_;                 // the face each particle crossed (domain exit), or -1
+    // Rigid bodies: each particle's body-particle row (or -1), and the bodies' fluid side.
+    Buffer<std::int32_t> row_, scratch_row_;
+    std::unique_ptr<ResidentBodies<Space>> bodies_;
+    std::uint64_t layout_ = 0; // changes when particles are reordered, removed or added
     mutable typename Space::Sorter sorter_;
     long sorts_ = 0;
     double t_neighbors_ = 0, t_forces_ = 0, t_integrate_ = 0;

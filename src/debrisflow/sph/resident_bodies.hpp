@@ -1,0 +1,126 @@
+#pragma once
+// Rigid bodies in a resident backend's fluid (issue #33): the fluid side of the body solver
+// (rigid::FluidSide) where the particles are. Each body's fluid force and moment are reduced
+// there (the body particles sorted by body, then a segmented sum) and only the bodies' few
+// loads come back to the host; the 6-DOF update stays on the host (rigid::BodySolver), and the
+// new body states go to the backend, where the body particles take their motion. The rules
+// are coupling/sph_body_k.hpp's, shared with the host coupling (coupling/sph_body.cpp).
+#include "debrisflow/coupling/sph_body.hpp"
+#include "debrisflow/coupling/sph_body_k.hpp"
+#include "debrisflow/rigid/fluid_side.hpp"
+#include "debrisflow/sph/resident_steps_k.hpp"
+#include <stdexcept>
+#include <vector>
+
+namespace debrisflow::sph {
+
+template <class Space> class ResidentSph;
+
+template <class Space> class ResidentBodies final : public rigid::FluidSide {
+    template <class T> using Buffer = typename Space::template Buffer<T>;
+
+public:
+    // The rows of the bodies built before the run (bodies added during it are rejected for a
+    // resident backend: require_backend_supports).
+    ResidentBodies(ResidentSph<Space>& sph, const coupling::SphBodyCoupling& coupling)
+        : sph_(sph), rows_(coupling.rows()), initial_(coupling.initial_rows()) {
+        upload(owner_, rows_.owner);
+        upload(offset_, rows_.offset);
+        upload(normal_, rows_.normal);
+    }
+
+    // The row of each particle of the host's set (by persistent id), or -1.
+    std::vector<std::int32_t> rows_of(const std::vector<ParticleId>& ids) const {
+        std::vector<std::int32_t> r(ids.size());
+        for (std::size_t k = 0; k < ids.size(); ++k)
+            r[k] = std::int32_t(rows_.row(ids[k], initial_));
+        return r;
+    }
+
+    // F_b, T_b summed over body b's particles in index order (coupling/sph_body_k.hpp).
+    void add_loads(const std::vector<rigid::BodyState>& bodies,
+                   std::vector<rigid::BodyLoads>& loads) override {
+        sph_.upload_once();
+        const Index nb = Index(bodies.size());
+        states_.upload(bodies.data(), nb);
+        sort_by_body(nb);
+        wrench_.resize(members_);
+        sums_.resize(nb);
+        Space::for_each(members_, coupling::MemberLoads{sph_.view(), rows(), order_.data(),
+                                                        states_.data(), wrench_.data()});
+        Space::segmented_sum(nb, start_.data(), wrench_.data(), sums_.data());
+        std::vector<coupling::Wrench> sums(bodies.size());
+        sums_.download(sums.data());
+        for (std::size_t b = 0; b < bodies.size(); ++b) {
+            loads[b].fluid_force += sums[b].force;
+            loads[b].fluid_torque += sums[b].torque;
+        }
+    }
+
+    void follow(const std::vector<rigid::BodyState>& bodies, bool positions) override {
+        sph_.upload_once();
+        states_.upload(bodies.data(), Index(bodies.size()));
+        Space::for_each(sph_.n_,
+                        coupling::FollowBodies{sph_.view(), rows(), states_.data(), positions});
+        Space::synchronize();
+    }
+
+    void add_shell(int, const rigid::BodyState&, const std::vector<rigid::ShellPoint>&, Real,
+                   Real) override {
+        throw std::logic_error("resident SPH: bodies added during a run (rock feeds) run on the "
+                               "host backend");
+    }
+    void release(int, std::vector<std::uint8_t>&) override {
+        throw std::logic_error("resident SPH: bodies leaving through an outlet run on the host "
+                               "backend");
+    }
+    std::size_t particles_of(int b) const override {
+        return std::size_t(Space::sum_of(sph_.n_, coupling::OfBody{rows(), std::int32_t(b)}));
+    }
+
+    std::size_t bytes() const {
+        return owner_.bytes() + offset_.bytes() + normal_.bytes() + states_.bytes() +
+               keys_.bytes() + order_.bytes() + start_.bytes() + wrench_.bytes() + sums_.bytes() +
+               sorter_.bytes();
+    }
+
+private:
+    template <class T> static void upload(Buffer<T>& b, const std::vector<T>& v) {
+        b.upload(v.data(), Index(v.size()));
+    }
+
+    coupling::BodyRows rows() const {
+        return {sph_.row_.data(), owner_.data(), offset_.data(), normal_.data()};
+    }
+
+    // The body particles grouped by body in index order (a stable sort by body, the others
+    // last), body b's at order_[start_[b]] .. order_[start_[b+1]-1]; redone when the
+    // particles were reordered, removed or added.
+    void sort_by_body(Index nb) {
+        if (layout_seen_ == sph_.layout_ && bodies_seen_ == nb) return;
+        layout_seen_ = sph_.layout_;
+        bodies_seen_ = nb;
+        const Index n = sph_.n_;
+        keys_.resize(n);
+        order_.resize(n);
+        start_.resize(nb + 1);
+        Space::for_each(n, coupling::BodyKeys{rows(), nb, keys_.data()});
+        sorter_.sort(keys_.data(), n, nb + 1, order_.data());
+        Space::for_each(nb + 1, CellStarts{keys_.data(), order_.data(), n, start_.data()});
+        members_ = start_.at(nb);
+    }
+
+    ResidentSph<Space>& sph_;
+    coupling::BodyParticles rows_; // on the host: the id -> row map
+    std::size_t initial_;
+    Buffer<std::int32_t> owner_;
+    Buffer<Vec3> offset_, normal_;
+    Buffer<rigid::BodyState> states_;
+    Buffer<Index> keys_, order_, start_;
+    Buffer<coupling::Wrench> wrench_, sums_;
+    typename Space::Sorter sorter_;
+    Index members_ = 0, bodies_seen_ = -1;
+    std::uint64_t layout_seen_ = ~std::uint64_t(0);
+};
+
+} // namespace debrisflow::sph
