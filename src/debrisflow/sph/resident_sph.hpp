@@ -170,9 +170,8 @@ public:
     std::size_t memory_bytes() const override {
         std::size_t b = sorter_bytes() + keys_.bytes() + order_.bytes() + start_cells_.bytes() +
                         tau_.bytes() + tau_next_.bytes() + kind_.bytes() + group_.bytes() +
-                        id_.bytes() + scratch_.bytes() + scratch_kind_.bytes() +
-                        scratch_group_.bytes() + scratch_id_.bytes() + keep_.bytes() +
-                        leave_.bytes() + pos_.bytes() + face_.bytes();
+                        id_.bytes() + scratch_kind_.bytes() + scratch_group_.bytes() +
+                        scratch_id_.bytes() + leave_.bytes() + pos_.bytes();
         for (const auto& a : real_) b += a.bytes();
         for (const auto& a : old_) b += a.bytes();
         for (const auto& a : start_) b += a.bytes();
@@ -190,16 +189,15 @@ public:
     Leaving remove_fluid_outside(const flow::ExitFaces& faces) override {
         upload_once();
         keep_.resize(n_);
-        face_.resize(n_);
-        Space::for_each(n_, KeepInsideDomain{view(), faces, keep_.data(), face_.data()});
-        return remove_leavers(true);
+        Space::for_each(n_, KeepInsideDomain{view(), faces, keep_.data()});
+        return remove_leavers(&faces);
     }
 
     Leaving remove_fluid_inside(const flow::OutletBox& box) override {
         upload_once();
         keep_.resize(n_);
         Space::for_each(n_, KeepOutsideBox{view(), box, keep_.data()});
-        return remove_leavers(false);
+        return remove_leavers(nullptr);
     }
 
     void prescribe(const flow::InletBuffer& buffer) override {
@@ -353,9 +351,9 @@ private:
     // Every per-particle array gathered into the grid's order, each into a scratch array of
     // its type that then takes its place; the order becomes the identity.
     void permute() {
-        for (auto& a : real_) gather(a, scratch_, 1);
+        for (auto& a : real_) gather(a, real_scratch(), 1);
         if (set_.keeps_previous_state())
-            for (auto& a : old_) gather(a, scratch_, 1);
+            for (auto& a : old_) gather(a, real_scratch(), 1);
         if (sps_) gather(tau_, tau_next_, 6); // tau_next_ is free between force evaluations
         gather(kind_, scratch_kind_, 1);
         gather(group_, scratch_group_, 1);
@@ -370,8 +368,8 @@ private:
     }
 
     // Copies the leavers (keep_[i] = 0) to the host in index order (their masses, and the
-    // faces in face_ when `faces`), then removes them.
-    Leaving remove_leavers(bool faces) {
+    // faces they crossed when `faces` is given), then removes them.
+    Leaving remove_leavers(const flow::ExitFaces* faces) {
         Leaving out;
         const auto pv = view();
         if (Space::first_where(n_, Dropped{keep_.data()}) == n_) return out; // none left
@@ -381,7 +379,13 @@ private:
         Space::for_each(n_, Complement{keep_.data(), leave_.data()});
         const Index m = Space::exclusive_scan(n_, leave_.data(), pos_.data());
         out.mass = gather_leavers(pv.mass, m);
-        if (faces) out.face = gather_leavers(face_.data(), m);
+        if (faces) {
+            Buffer<int> picked;
+            picked.resize(m);
+            Space::for_each(n_, LeaverFaces{pv, *faces, leave_.data(), pos_.data(), picked.data()});
+            out.face.resize(std::size_t(m));
+            picked.download(out.face.data());
+        }
         compact();
         return out;
     }
@@ -400,15 +404,21 @@ private:
         b.upload_at(width * n_, tail.data(), Index(tail.size()));
     }
 
+    // The scratch array of reordering and compaction: the symplectic scheme's copy of x at
+    // t_n, which is free then (the particles are reordered in the neighbour search after the
+    // corrector and compacted between steps; the predictor writes it whole), and unused by
+    // the Verlet scheme.
+    Buffer<Real>& real_scratch() { return start_[0]; }
+
     // Keeps the particles with keep_[i] = 1, in order (stream compaction: an exclusive scan of
     // the flags, then every array scattered to its new place).
     void compact() {
         pos_.resize(n_);
         const Index m = Space::exclusive_scan(n_, keep_.data(), pos_.data());
         if (m == n_) return;
-        for (auto& a : real_) scatter(a, scratch_, 1, m);
+        for (auto& a : real_) scatter(a, real_scratch(), 1, m);
         if (set_.keeps_previous_state())
-            for (auto& a : old_) scatter(a, scratch_, 1, m);
+            for (auto& a : old_) scatter(a, real_scratch(), 1, m);
         if (sps_) {
             scatter(tau_, tau_next_, 6, m);
             tau_next_.resize(6 * m);
@@ -460,13 +470,15 @@ private:
     std::array<Buffer<Real>, kReal> real_;
     std::array<Buffer<Real>, 4> old_;   // Verlet: v and rho at t_n-1
     std::array<Buffer<Real>, 7> start_; // symplectic: x, v and rho at t_n
-    Buffer<Real> tau_, tau_next_, scratch_;
+    Buffer<Real> tau_, tau_next_;
     Buffer<std::uint8_t> kind_, scratch_kind_;
     Buffer<std::int16_t> group_, scratch_group_;
     Buffer<ParticleId> id_, scratch_id_;
     Buffer<Index> keys_, order_, start_cells_;
-    Buffer<Index> keep_, leave_, pos_; // stream compaction: flags and their scan
-    Buffer<int> face_;                 // the face each particle crossed (domain exit), or -1
+    // Stream compaction: the keep flags (in keys_, which only the grid's build uses), the
+    // leavers' flags and the scan.
+    Buffer<Index>& keep_ = keys_;
+    Buffer<Index> leave_, pos_;
     // Rigid bodies: each particle's body-particle row (or -1), and the bodies' fluid side.
     Buffer<std::int32_t> row_, scratch_row_;
     std::unique_ptr<ResidentBodies<Space>> bodies_;

@@ -66,17 +66,26 @@ struct KeepOutsideGroup {
     DF_HD void operator()(Index i) const { keep[i] = pv.is_fluid(i) || pv.group[i] != group; }
 };
 
-// keep[i] = 0 and face[i] >= 0 for the fluid particles whose centre left the domain (the face
-// crossed), keep[i] = 1 and face[i] = -1 for the others.
+// keep[i] = 0 for the fluid particles whose centre left the domain, 1 for the others.
 struct KeepInsideDomain {
     particles::ParticleView pv;
     flow::ExitFaces faces;
     Index* keep;
-    int* face;
     DF_HD void operator()(Index i) const {
-        const int f = pv.is_fluid(i) ? faces.of_finite(pv.pos(i)) : -1;
-        face[i] = f;
-        keep[i] = f < 0;
+        keep[i] = !(pv.is_fluid(i) && faces.of_finite(pv.pos(i)) >= 0);
+    }
+};
+
+// out[at[i]] = the face leaver i crossed, for the items with leave[i] (KeepInsideDomain's
+// leavers, `at` the exclusive scan of leave).
+struct LeaverFaces {
+    particles::ParticleView pv;
+    flow::ExitFaces faces;
+    const Index* leave;
+    const Index* at;
+    int* out;
+    DF_HD void operator()(Index i) const {
+        if (leave[i]) out[at[i]] = faces.of_finite(pv.pos(i));
     }
 };
 
