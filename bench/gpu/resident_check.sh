@@ -2,7 +2,8 @@
 # The prepared device check of the resident SPH loop (issue #33), for a session that has a GPU:
 # one call, a few minutes. Builds the CLI with the CUDA backend, runs the 3D dam break to 0.05 s
 # with --backend cuda and with --backend host_resident and compares their probes
-# (tools/compare_probes.py), then times the device at 0.18, 0.79 and 2.2 M particles (200
+# (tools/compare_probes.py), the same for a gate with an inlet and an outlet and for the
+# floating box, then times the device at 0.18, 0.79 and 2.2 M particles (200
 # steps each) and the host's resident loop at 0.18 M on every core. Prints the figures that go
 # into docs/performance.md ("The resident loop on a GPU"); writes its runs under $OUT (or /tmp).
 set -euo pipefail
@@ -36,6 +37,17 @@ report "cuda, 0.05 s" "$out/cuda"
 python3 tools/compare_probes.py "$out/host" "$out/cuda" --tolerance 1e-6 \
     || echo "DIFFERENCE: the device's probes differ from the host's beyond 1e-6"
 
+# Inlet, outlet and gate; a floating body (loads reduced per body on the device).
+for extra in validation/gate_inlet_outlet2d.toml:0.3 rigid/floating_box2d.toml:0.2; do
+    name=$(basename "${extra%%:*}" .toml)
+    for b in host_resident cuda; do
+        "$exe" run "cases/${extra%%:*}" --out "$out/${name}_$b" --backend $b \
+            --set time.end="${extra##*:}" "${common[@]}"
+    done
+    report "cuda, $name" "$out/${name}_cuda"
+    python3 tools/compare_probes.py "$out/${name}_host_resident" "$out/${name}_cuda" \
+        --tolerance 1e-6 || echo "DIFFERENCE: $name on the device differs beyond 1e-6"
+done
 for dp in 0.0085 0.005 0.0035; do
     dt=$("$exe" check "$case" --set dp=$dp | sed -n 's/^time step: \([0-9.e+-]*\) s.*/\1/p')
     end=$(python3 -c "print(200 * $dt)")
