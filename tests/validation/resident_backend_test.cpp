@@ -9,6 +9,7 @@
 #include "run_case.hpp"
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <filesystem>
 #include <map>
 
 using namespace debrisflow;
@@ -148,4 +149,27 @@ TEST(ResidentBackend, BinghamCollapse) {
           {"sph.viscosity=\"bingham\"", "sph.consistency=10", "sph.yield_stress=20",
            "sph.regularization=10", "dp=0.005", "output.vtk=false"},
           0.05, 0.005, 1000);
+}
+
+// Probes that read the fluid through its reader (pressure, gauge, front, a wall's load) are
+// evaluated where the particles are: without frames, the particles are copied to the host once,
+// at the end; each VTK frame copies them (issue #33: copies only for what is scheduled).
+TEST(ResidentBackend, ProbesDoNotCopyTheParticles) {
+    const auto copies = [](const std::vector<std::string>& extra, const std::string& out) {
+        std::vector<std::string> sets = {"dp=0.034", "exec.backend=\"host_resident\""};
+        sets.insert(sets.end(), extra.begin(), extra.end());
+        app::Simulation sim(io::read_case(
+            std::string(DEBRISFLOW_SOURCE_DIR) + "/cases/bench/dambreak3d.toml", sets));
+        const auto report = sim.run({out, true, 0, 0.05});
+        EXPECT_FALSE(sim.probes().empty());
+        EXPECT_GT(sim.probes().front()->history().size(), 10u);
+        return report.sph_copies_to_host;
+    };
+    EXPECT_EQ(copies({"output.vtk=false"}, ""), 1);
+    // with files: frames at t = 0, 0.01, ..., 0.05, each a copy
+    const std::string out =
+        (std::filesystem::temp_directory_path() / "resident_backend_copies").string();
+    std::filesystem::remove_all(out);
+    EXPECT_GE(copies({"output.vtk_every=0.01"}, out), 6);
+    std::filesystem::remove_all(out);
 }

@@ -38,6 +38,7 @@ Simulation::Simulation(io::CaseSpec spec)
             sph_fem_->connect();
         }
         solver_ = std::make_unique<sph::SphSolver>(spec_.sph, set_, spec_.domain);
+        host_fluid_ = std::make_unique<probes::HostFluidReader>(*solver_);
         if (spec_.backend != "host")
             resident_ =
                 sph::make_resident_sph(spec_.backend, *solver_, spec_.exec_origin.at("backend"));
@@ -282,7 +283,8 @@ RunReport Simulation::run(const RunOptions& opt) {
         probes::Probe* raw = p.get();
         integ.add_observer(
             time::Schedule::every_time(p->every()),
-            [this, raw](const time::StepInfo& s) { raw->record(s.t, probe_context()); });
+            [this, raw](const time::StepInfo& s) { raw->record(s.t, probe_context()); },
+            raw->reads_particles());
     }
     const auto frames = spec_.vtk_every > 0 ? time::Schedule::every_time(spec_.vtk_every)
                                             : time::Schedule::every_steps(0);
@@ -366,6 +368,7 @@ RunReport Simulation::run(const RunOptions& opt) {
             report.pair_list_builds = resident_ ? resident_->sorts() : solver_->list_builds();
             report.pairs = solver_->pair_list().pairs();
             report.sph_bytes = resident_ ? resident_->memory_bytes() : solver_->memory_bytes();
+            if (resident_) report.sph_copies_to_host = resident_->copies_to_host();
             report.sph_particles = set_.size();
         }
         if (rigid_) report.body_contacts = rigid_->contacts();

@@ -17,6 +17,7 @@
 #include "debrisflow/io/case_spec.hpp"
 #include "debrisflow/io/vtk_writer.hpp"
 #include "debrisflow/probes/design_formulas.hpp"
+#include "debrisflow/probes/fluid_reader.hpp"
 #include "debrisflow/probes/probe.hpp"
 #include "debrisflow/rigid/body_solver.hpp"
 #include "debrisflow/sph/resident_backend.hpp"
@@ -91,7 +92,9 @@ private:
     // mean contact force) drops below dem.settle_ratio; then zeroes grain velocities.
     void settle_grains();
     probes::ProbeContext probe_context() {
-        return {solver_.get(), dem_.get(), rigid_.get(), fem_.get(), &domain_exit_};
+        const probes::FluidReader* fluid =
+            resident_ ? &resident_->fluid_reader() : host_fluid_.get();
+        return {solver_.get(), dem_.get(), rigid_.get(), fem_.get(), &domain_exit_, fluid};
     }
     // World positions, velocities, radii and body index of the bodies' contact samples (or
     // vertices) for the VTK output.
@@ -105,6 +108,7 @@ private:
     // The SPH phase's time loop on a resident backend (exec.backend other than "host"); the
     // solver above then keeps the parameters and the grid the probes read.
     std::unique_ptr<sph::ResidentPhase> resident_;
+    std::unique_ptr<probes::FluidReader> host_fluid_; // the probes' view of the host solver's fluid
     dem::GrainSet grains_;
     dem::WallSet dem_walls_;
     std::unique_ptr<dem::DemSolver> dem_;

@@ -59,10 +59,13 @@ void write_summary(const std::string& path, const io::CaseSpec& spec, const RunR
     if (r.sph_bytes > 0) {
         o << fmt::format(
             "  \"sph_memory\": {{\"backend\": {}, \"pair_loop\": {}, \"bytes\": {}, "
-            "\"bytes_per_particle\": {}}},\n",
+            "\"bytes_per_particle\": {}{}}},\n",
             quoted(spec.backend), quoted(spec.backend == "host" ? spec.sph.pair_loop : "cells"),
             r.sph_bytes,
-            num(r.sph_particles > 0 ? double(r.sph_bytes) / double(r.sph_particles) : 0));
+            num(r.sph_particles > 0 ? double(r.sph_bytes) / double(r.sph_particles) : 0),
+            r.sph_copies_to_host >= 0
+                ? fmt::format(", \"copies_to_host\": {}", r.sph_copies_to_host)
+                : "");
     }
     if (r.grains > 0)
         o << fmt::format("  \"dem\": {{\"dt\": {}, \"dt_limiter\": {}, \"contacts\": {}, "

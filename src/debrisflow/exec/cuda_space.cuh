@@ -141,6 +141,11 @@ struct CudaSpace {
         return m > 0 ? m : Real(0);
     }
 
+    // max over i of f(i) and init.
+    template <class F> static Real max_from(Index n, const F& f, Real init) {
+        return reduce<Real>(n, f, cuda_detail::Larger{}, init);
+    }
+
     // sum over i of f(i) (0 for n = 0).
     template <class F> static Real sum_of(Index n, const F& f) {
         return reduce<Real>(n, f, cuda_detail::Plus{}, Real(0));

@@ -47,6 +47,11 @@ struct HostSpace {
     // max over i of f(i) for f >= 0 (0 for n = 0).
     template <class F> static Real max_of(Index n, const F& f) { return exec::max_of(n, f); }
 
+    // max over i of f(i) and init.
+    template <class F> static Real max_from(Index n, const F& f, Real init) {
+        return exec::max_of(n, init, f);
+    }
+
     // sum over i of f(i) (0 for n = 0).
     template <class F> static Real sum_of(Index n, const F& f) { return exec::sum_of<Real>(n, f); }
 

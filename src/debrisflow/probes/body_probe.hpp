@@ -15,6 +15,7 @@ public:
     const std::string& body() const { return body_; }
     std::vector<std::string> columns() const override;
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
+    bool reads_particles() const override { return false; } // the body solver's state
 
 private:
     std::string body_;

@@ -20,6 +20,7 @@ public:
     std::vector<Real> sample(Real t, const ProbeContext&) override {
         return {inlet_.discharge(t), inlet_.velocity(t), inlet_.mass_in(), inlet_.volume_in()};
     }
+    bool reads_particles() const override { return false; } // its own tallies
 
 private:
     const flow::FluidInlet& inlet_;
@@ -59,6 +60,7 @@ public:
         if (bodies_) v.insert(v.end(), {outlet_.body_mass(), Real(outlet_.bodies_removed())});
         return v;
     }
+    bool reads_particles() const override { return false; } // its own tallies
     void extra_state(checkpoint::Archive& ar) override;
 
 private:
@@ -82,6 +84,7 @@ public:
         return {feed_.discharge(t), feed_.volume_in(), feed_.mass_in(), Real(feed_.pieces_in()),
                 feed_.owed()};
     }
+    bool reads_particles() const override { return false; } // its own tallies
 
 private:
     const flow::SolidFeed& feed_;
@@ -119,6 +122,7 @@ public:
             for (long n : t->count) v.push_back(Real(n));
         return v;
     }
+    bool reads_particles() const override { return false; } // the domain exit's tally
 
 private:
     std::string unit_;

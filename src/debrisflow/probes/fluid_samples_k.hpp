@@ -81,6 +81,21 @@ struct WallParticleLoad {
     }
 };
 
+// out[k] = f(x[k]) for a point sampler f (ShepardSample, FilledFraction), one item per point.
+template <class F, class Out> struct AtPoints {
+    F f;
+    const Vec3* x;
+    Out* out;
+    DF_HD void operator()(Index k) const { out[k] = f(x[k]); }
+};
+
+// Component `axis` of WallParticleLoad (a sum over the particles per component).
+struct WallLoadComponent {
+    WallParticleLoad load;
+    int axis;
+    DF_HD Real operator()(Index i) const { return load(i)[axis]; }
+};
+
 static_assert(std::is_trivially_copyable_v<FrontCoordinate>);
 static_assert(std::is_trivially_copyable_v<WallParticleLoad>);
 

@@ -28,6 +28,8 @@ class DomainExit;
 
 namespace debrisflow::probes {
 
+class FluidReader;
+
 // What a probe may look at: the fluid, the grains, the rigid bodies, the FEM solids (null when
 // absent) and the tally of what left the domain.
 struct ProbeContext {
@@ -36,6 +38,8 @@ struct ProbeContext {
     const rigid::BodySolver* rigid = nullptr;
     const fem::FemSolver* fem = nullptr;
     const flow::DomainExit* domain_exit = nullptr; // what left the domain
+    // The fluid's point samples and reductions, where its particles are (fluid_reader.hpp).
+    const FluidReader* fluid = nullptr;
 };
 
 // Largest mean of the series (t_k, v_k), joined linearly, over any window [t - window, t]
@@ -56,6 +60,10 @@ public:
     virtual std::vector<Real> sample(Real t, const ProbeContext& ctx) = 0;
 
     Real every() const { return every_; }
+    // Whether a sample reads the particle arrays on the host (ctx.sph's set, published from a
+    // resident backend first); false for probes that read only a FluidReader, the bodies,
+    // the grains or their own tallies.
+    virtual bool reads_particles() const { return true; }
     // Opens probes/<name>.csv in `dir`; probes with field output also open their VTK series.
     void open(const std::string& dir);
     virtual void open_extra(const std::string& /*dir*/) {}

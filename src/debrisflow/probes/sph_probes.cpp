@@ -27,7 +27,8 @@ std::unique_ptr<Probe> GaugeProbe::from_config(const ProbeSetup& s) {
                                         : "expected [x] (or [x, z], z ignored)");
     const Vec3 x = c.dim == 3 ? Vec3{v[0], v[1], c.domain.lo.z} : Vec3{v[0], 0, c.domain.lo.z};
     s.require_in_domain("position", x);
-    return std::make_unique<GaugeProbe>(s.name(), s.every(), x, Real(0.25) * c.dp);
+    return std::make_unique<GaugeProbe>(s.name(), s.every(), x, Real(0.25) * c.dp, c.domain.lo.z,
+                                        c.domain.hi.z);
 }
 
 std::unique_ptr<Probe> FrontProbe::from_config(const ProbeSetup& s) {
@@ -40,71 +41,47 @@ std::unique_ptr<Probe> FrontProbe::from_config(const ProbeSetup& s) {
     return std::make_unique<FrontProbe>(s.name(), s.every(), axis, a.front() == '-' ? -1 : 1);
 }
 
-PointSample interpolate(const sph::SphSolver& solver, Vec3 x) {
-    auto pv = const_cast<sph::SphSolver&>(solver).particles().view();
-    return std::visit(
-        [&](const auto& kernel) {
-            using K = std::decay_t<decltype(kernel)>;
-            return ShepardSample<K>{pv, solver.grid().view(), kernel}(x);
-        },
-        solver.models().kernel);
+std::vector<Real> PressureProbe::sample_fluid(const FluidReader& fluid) const {
+    return {fluid.samples({x_})[0].p};
 }
 
-std::vector<Real> PressureProbe::sample_fluid(const sph::SphSolver& solver) const {
-    return {interpolate(solver, x_).p};
-}
-
-std::vector<Real> VelocityProbe::sample_fluid(const sph::SphSolver& solver) const {
-    const PointSample s = interpolate(solver, x_);
+std::vector<Real> VelocityProbe::sample_fluid(const FluidReader& fluid) const {
+    const PointSample s = fluid.samples({x_})[0];
     return {s.v.x, s.v.y, s.v.z, norm(s.v)};
 }
 
-// Kernel sum of the volume of fluid and boundary particles at x (FilledFraction): solids count
-// as filled, so that a film on the bed raises the reading from the bed's elevation by its
-// thickness instead of staying dry until it is a kernel deep.
-Real filled_fraction(const sph::SphSolver& solver, Vec3 x) {
-    auto pv = const_cast<sph::SphSolver&>(solver).particles().view();
-    return std::visit(
-        [&](const auto& kernel) {
-            using K = std::decay_t<decltype(kernel)>;
-            return FilledFraction<K>{pv, solver.grid().view(), kernel}(x);
-        },
-        solver.models().kernel);
-}
-
-std::vector<Real> GaugeProbe::sample_fluid(const sph::SphSolver& solver) const {
-    // Downward from the domain's top, so that the thin under-filled layer DBC leaves between
-    // fluid and wall cannot pass for the surface; the first level filled to 0.5 is the surface.
-    const auto& d = solver.domain();
+// The kernel sum of the volume of fluid and boundary particles (FilledFraction) downward from
+// the domain's top, so that the thin under-filled layer DBC leaves between fluid and wall
+// cannot pass for the surface; the first level filled to 0.5 is the surface. Solids count as
+// filled, so that a film on the bed raises the reading from the bed's elevation by its
+// thickness instead of staying dry until it is a kernel deep. The levels are read in batches
+// (one evaluation where the particles are per batch).
+std::vector<Real> GaugeProbe::sample_fluid(const FluidReader& fluid) const {
+    constexpr int batch = 32;
     Real prev_w = 0;
-    for (Real z = d.hi.z; z >= d.lo.z; z -= dz_) {
-        const Real w = filled_fraction(solver, {x_.x, x_.y, z});
-        if (w >= 0.5) {
-            if (z == d.hi.z) return {z};
-            // linear interpolation of the 0.5 crossing between z and z + dz
-            const Real f = (w - Real(0.5)) / (w - prev_w);
-            return {z + f * dz_};
+    Real z = top_;
+    while (z >= bottom_) {
+        std::vector<Vec3> levels;
+        for (Real l = z; l >= bottom_ && levels.size() < batch; l -= dz_)
+            levels.push_back({x_.x, x_.y, l});
+        const std::vector<Real> w = fluid.filled(levels);
+        for (std::size_t k = 0; k < levels.size(); ++k) {
+            const Real level = levels[k].z;
+            if (w[k] >= 0.5) {
+                if (level == top_) return {level};
+                // linear interpolation of the 0.5 crossing between the level and the one above
+                const Real f = (w[k] - Real(0.5)) / (w[k] - prev_w);
+                return {level + f * dz_};
+            }
+            prev_w = w[k];
         }
-        prev_w = w;
+        z = levels.back().z - dz_;
     }
-    return {d.lo.z};
+    return {bottom_};
 }
 
-std::vector<Real> FrontProbe::sample_fluid(const sph::SphSolver& solver) const {
-    auto pv = const_cast<sph::SphSolver&>(solver).particles().view();
-    const Real lowest = -std::numeric_limits<Real>::max();
-    const FrontCoordinate coordinate{pv, axis_, sign_, lowest};
-    Real m = lowest; // the largest of sign * coordinate
-    for (Index i = 0; i < pv.n; ++i) m = std::max(m, coordinate(i));
-    return {sign_ * m};
-}
-
-Vec3 fluid_wall_force(const sph::SphSolver& solver, int group) {
-    const WallParticleLoad load{const_cast<sph::SphSolver&>(solver).particles().view(), group};
-    Vec3 f;
-    for (Index i = 0; i < load.pv.n; ++i)
-        if (load.on_wall(i)) f += load(i); // the wall's particles, in index order
-    return f;
+std::vector<Real> FrontProbe::sample_fluid(const FluidReader& fluid) const {
+    return {sign_ * fluid.front(axis_, sign_)};
 }
 
 } // namespace debrisflow::probes

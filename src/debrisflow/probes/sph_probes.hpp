@@ -1,22 +1,18 @@
 #pragma once
-#include "debrisflow/probes/fluid_samples_k.hpp"
+#include "debrisflow/probes/fluid_reader.hpp"
 #include "debrisflow/probes/probe.hpp"
 
 namespace debrisflow::probes {
 
-// Shepard-normalised fluid fields at x (ShepardSample, fluid_samples_k.hpp).
-PointSample interpolate(const sph::SphSolver& solver, Vec3 x);
-
-// Total force of the fluid on the boundary particles of wall `group`: sum of m_i a_i.
-Vec3 fluid_wall_force(const sph::SphSolver& solver, int group);
-
-// A probe that samples the fluid.
+// A probe that samples the fluid through a FluidReader (where the particles are: a resident
+// backend is not copied to the host for it).
 class FluidProbe : public Probe {
 public:
     std::vector<Real> sample(Real, const ProbeContext& ctx) override {
-        return sample_fluid(*ctx.sph);
+        return sample_fluid(*ctx.fluid);
     }
-    virtual std::vector<Real> sample_fluid(const sph::SphSolver& solver) const = 0;
+    virtual std::vector<Real> sample_fluid(const FluidReader& fluid) const = 0;
+    bool reads_particles() const override { return false; }
 
 protected:
     using Probe::Probe;
@@ -30,7 +26,7 @@ public:
     PressureProbe(std::string name, Real every, Vec3 x)
         : FluidProbe(std::move(name), every), x_(x) {}
     std::vector<std::string> columns() const override { return {"p [Pa]"}; }
-    std::vector<Real> sample_fluid(const sph::SphSolver& solver) const override;
+    std::vector<Real> sample_fluid(const FluidReader& fluid) const override;
 
 private:
     Vec3 x_;
@@ -46,7 +42,7 @@ public:
     std::vector<std::string> columns() const override {
         return {"vx [m/s]", "vy [m/s]", "vz [m/s]", "speed [m/s]"};
     }
-    std::vector<Real> sample_fluid(const sph::SphSolver& solver) const override;
+    std::vector<Real> sample_fluid(const FluidReader& fluid) const override;
 
 private:
     Vec3 x_;
@@ -60,15 +56,16 @@ class GaugeProbe : public FluidProbe {
 public:
     static constexpr std::string_view type_name = "gauge";
     static std::unique_ptr<Probe> from_config(const ProbeSetup& s); // keys: position (plan)
-    // x: the plan position (z unused); dz: the vertical scan step.
-    GaugeProbe(std::string name, Real every, Vec3 x, Real dz)
-        : FluidProbe(std::move(name), every), x_(x), dz_(dz) {}
+    // x: the plan position (z unused); dz: the vertical scan step from `top` down to `bottom`
+    // (the domain's).
+    GaugeProbe(std::string name, Real every, Vec3 x, Real dz, Real bottom, Real top)
+        : FluidProbe(std::move(name), every), x_(x), dz_(dz), bottom_(bottom), top_(top) {}
     std::vector<std::string> columns() const override { return {"elevation [m]"}; }
-    std::vector<Real> sample_fluid(const sph::SphSolver& solver) const override;
+    std::vector<Real> sample_fluid(const FluidReader& fluid) const override;
 
 private:
     Vec3 x_;
-    Real dz_;
+    Real dz_, bottom_, top_;
 };
 
 // Surge-front position along an axis: the largest coordinate of any fluid particle, or with a
@@ -84,7 +81,7 @@ public:
     std::vector<std::string> columns() const override {
         return {std::string(1, "xyz"[axis_]) + "_front [m]"};
     }
-    std::vector<Real> sample_fluid(const sph::SphSolver& solver) const override;
+    std::vector<Real> sample_fluid(const FluidReader& fluid) const override;
 
 private:
     int axis_;

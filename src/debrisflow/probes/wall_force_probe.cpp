@@ -1,5 +1,6 @@
 #include "debrisflow/probes/wall_force_probe.hpp"
 #include "debrisflow/dem/dem_solver.hpp"
+#include "debrisflow/probes/fluid_reader.hpp"
 #include "debrisflow/probes/sph_probes.hpp"
 #include "debrisflow/rigid/body_solver.hpp"
 
@@ -61,8 +62,8 @@ std::vector<std::string> WallForceProbe::columns() const {
 
 std::vector<Real> WallForceProbe::sample(Real, const ProbeContext& ctx) {
     Vec3 f, avg, ff, fg;
-    if (ctx.sph) {
-        f = ff = fluid_wall_force(*ctx.sph, wall_);
+    if (ctx.fluid) {
+        f = ff = ctx.fluid->wall_load(wall_);
         avg = f;
     }
     if (ctx.dem) {

@@ -33,6 +33,7 @@ public:
     const Companions& companions() const { return companions_; }
     std::vector<std::string> columns() const override;
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
+    bool reads_particles() const override { return false; } // the fluid through ctx.fluid
 
 private:
     int wall_;

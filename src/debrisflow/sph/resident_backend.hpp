@@ -20,6 +20,9 @@ class SphBodyCoupling;
 namespace debrisflow::rigid {
 class BodySolver;
 }
+namespace debrisflow::probes {
+class FluidReader;
+}
 
 namespace debrisflow::sph {
 
@@ -32,6 +35,8 @@ public:
     virtual std::size_t memory_bytes() const = 0;
     // Times the particles were sorted by cell.
     virtual long sorts() const = 0;
+    // Times the particles were copied to the host's set (publish).
+    virtual long copies_to_host() const = 0;
     // Particles held now (the host's set is brought up to date only by publish()).
     virtual Index size() const = 0;
     // Removes the boundary particles of wall group `group` (a gate lifting), where they are.
@@ -56,6 +61,8 @@ public:
     // particles moved where the particles are (sph/resident_bodies.hpp).
     virtual void couple_bodies(rigid::BodySolver& bodies,
                                const coupling::SphBodyCoupling& coupling) = 0;
+    // The probes' point samples and reductions, evaluated where the particles are.
+    virtual const probes::FluidReader& fluid_reader() const = 0;
     // The host's ParticleSet was replaced (a checkpoint restored): take it over again now.
     virtual void reload() = 0;
 };

@@ -17,6 +17,7 @@
 #include "debrisflow/sph/interaction_k.hpp"
 #include "debrisflow/sph/resident_backend.hpp"
 #include "debrisflow/sph/resident_bodies.hpp"
+#include "debrisflow/sph/resident_fluid_reader.hpp"
 #include "debrisflow/sph/resident_steps_k.hpp"
 #include "debrisflow/sph/sph_solver.hpp"
 #include "debrisflow/sph/sph_solver_gather.hpp"
@@ -32,6 +33,7 @@ namespace debrisflow::sph {
 template <class Space> class ResidentSph final : public ResidentPhase {
     template <class T> using Buffer = typename Space::template Buffer<T>;
     friend class ResidentBodies<Space>;
+    friend class ResidentFluidReader<Space>;
 
 public:
     // Takes over the host solver's particles at the first neighbour search; the host solver
@@ -152,6 +154,7 @@ public:
     // host grid that the probes interpolate on.
     void publish() override {
         if (!resident_) return;
+        ++copies_;
         auto fields = real_fields(set_);
         for (std::size_t f = 0; f < fields.size(); ++f) download(real_[f], *fields[f]);
         if (set_.keeps_previous_state()) {
@@ -176,6 +179,7 @@ public:
         for (const auto& a : old_) b += a.bytes();
         for (const auto& a : start_) b += a.bytes();
         if (bodies_) b += row_.bytes() + scratch_row_.bytes() + bodies_->bytes();
+        b += reader_.bytes();
         return b;
     }
     Index size() const override { return resident_ ? n_ : set_.size(); }
@@ -250,6 +254,11 @@ public:
         bodies.attach_fluid(bodies_.get());
     }
 
+    const probes::FluidReader& fluid_reader() const override {
+        const_cast<ResidentSph*>(this)->upload_once(); // a sample before the first step
+        return reader_;
+    }
+
     void reload() override {
         resident_ = false;
         upload_once();
@@ -257,6 +266,7 @@ public:
 
     // How many times the particles were sorted by cell.
     long sorts() const override { return sorts_; }
+    long copies_to_host() const override { return copies_; }
 
 private:
     static constexpr std::size_t kReal = 18; // the ParticleView's Real arrays, x .. mu
@@ -483,8 +493,9 @@ private:
     Buffer<std::int32_t> row_, scratch_row_;
     std::unique_ptr<ResidentBodies<Space>> bodies_;
     std::uint64_t layout_ = 0; // changes when particles are reordered, removed or added
+    ResidentFluidReader<Space> reader_{*this}; // the probes' point samples and reductions
     mutable typename Space::Sorter sorter_;
-    long sorts_ = 0;
+    long sorts_ = 0, copies_ = 0;
     double t_neighbors_ = 0, t_forces_ = 0, t_integrate_ = 0;
 };
 
