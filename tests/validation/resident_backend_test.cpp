@@ -7,9 +7,9 @@
 // measured bitwise equal when the test was written (2026-12-04).
 #include "probe_difference.hpp"
 #include "run_case.hpp"
+#include <filesystem>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
-#include <filesystem>
 #include <map>
 
 using namespace debrisflow;
@@ -148,6 +148,22 @@ TEST(ResidentBackend, BinghamCollapse) {
     check("cases/validation/viscous_collapse2d.toml",
           {"sph.viscosity=\"bingham\"", "sph.consistency=10", "sph.yield_stress=20",
            "sph.regularization=10", "dp=0.005", "output.vtk=false"},
+          0.05, 0.005, 1000);
+}
+
+// mDBC walls: the ghost-node densities where the particles are, before the pressures.
+TEST(ResidentBackend, DamBreakMdbc) {
+    check("cases/dambreak2d.toml", {"sph.boundary=\"mdbc\"", "dp=0.015", "output.vtk=false"}, 0.3,
+          0.015, 1000);
+}
+
+// mDBC's no-slip with a Bingham slurry: the ghost-node velocities, held where the particles
+// are, in the apparent viscosity's strain rate and in the viscous pair term.
+TEST(ResidentBackend, BinghamCollapseMdbcNoSlip) {
+    check("cases/validation/viscous_collapse2d.toml",
+          {"sph.boundary=\"mdbc\"", "sph.no_slip=\"mdbc\"", "sph.viscosity=\"bingham\"",
+           "sph.consistency=10", "sph.yield_stress=20", "sph.regularization=10", "dp=0.005",
+           "output.vtk=false"},
           0.05, 0.005, 1000);
 }
 

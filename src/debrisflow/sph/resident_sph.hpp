@@ -15,6 +15,7 @@
 #include "debrisflow/rigid/body_solver.hpp"
 #include "debrisflow/sph/apparent_viscosity_k.hpp"
 #include "debrisflow/sph/interaction_k.hpp"
+#include "debrisflow/sph/mdbc_k.hpp"
 #include "debrisflow/sph/resident_backend.hpp"
 #include "debrisflow/sph/resident_bodies.hpp"
 #include "debrisflow/sph/resident_fluid_reader.hpp"
@@ -69,9 +70,24 @@ public:
         ScopedTimer timer(t_forces_);
         const auto pv = view();
         const SphParams& p = host_.params();
-        const NoSlipWall wall = host_.no_slip_wall(); // the apparent viscosity's
-        Space::for_each(n_, TaitPressure{pv, host_.eos()});
         const auto& m = host_.models();
+        // mDBC: the boundary particles' densities (and with its no-slip, the ghost nodes'
+        // velocities) from their ghost nodes, before the pressures, as the host solver
+        if (p.boundary == "mdbc") {
+            const bool mirrored = p.no_slip == "mdbc";
+            ghost_.resize(mirrored ? 4 * n_ : 0);
+            std::visit(
+                [&](const auto& kernel) {
+                    using K = std::decay_t<decltype(kernel)>;
+                    Space::for_each(n_, MdbcDensity<K>{pv, grid_, kernel, p.h,
+                                                       host_.boundary_min_density(), p.dim,
+                                                       mirrored ? ghost_.data() : nullptr});
+                },
+                m.kernel);
+        }
+        // the wall velocity the viscous terms see: Morris's, or mDBC's mirrored ghost
+        const NoSlipWall wall{ghost_.size() > 0 ? ghost_.data() : nullptr, Real(0.5) * p.dp};
+        Space::for_each(n_, TaitPressure{pv, host_.eos()});
         std::visit(
             [&](const auto& kernel, const auto& visc) {
                 using K = std::decay_t<decltype(kernel)>;
@@ -87,8 +103,9 @@ public:
         std::visit(
             [&](const auto& kernel, const auto& visc, const auto& diff) {
                 // pressures, sound speeds and volumes computed where a side is loaded
-                const auto terms = host_.pair_terms(pv, kernel, visc, diff, nullptr, nullptr,
-                                                    nullptr, sps_ ? tau_.data() : nullptr);
+                auto terms = host_.pair_terms(pv, kernel, visc, diff, nullptr, nullptr, nullptr,
+                                              sps_ ? tau_.data() : nullptr);
+                terms.wall = wall;
                 Space::for_each(n_, make_gather(terms, grid_, p.gravity, sps.smag, sps.blin,
                                                 sps_ ? tau_next_.data() : nullptr));
             },
@@ -173,8 +190,9 @@ public:
     std::size_t memory_bytes() const override {
         std::size_t b = sorter_bytes() + keys_.bytes() + order_.bytes() + start_cells_.bytes() +
                         tau_.bytes() + tau_next_.bytes() + kind_.bytes() + group_.bytes() +
-                        id_.bytes() + scratch_kind_.bytes() + scratch_group_.bytes() +
-                        scratch_id_.bytes() + leave_.bytes() + pos_.bytes();
+                        id_.bytes() + ghost_.bytes() + scratch_kind_.bytes() +
+                        scratch_group_.bytes() + scratch_id_.bytes() + leave_.bytes() +
+                        pos_.bytes();
         for (const auto& a : real_) b += a.bytes();
         for (const auto& a : old_) b += a.bytes();
         for (const auto& a : start_) b += a.bytes();
@@ -481,6 +499,7 @@ private:
     std::array<Buffer<Real>, 4> old_;   // Verlet: v and rho at t_n-1
     std::array<Buffer<Real>, 7> start_; // symplectic: x, v and rho at t_n
     Buffer<Real> tau_, tau_next_;
+    Buffer<Real> ghost_; // mDBC's no-slip: (v_g - v_b, seen) per particle, each evaluation
     Buffer<std::uint8_t> kind_, scratch_kind_;
     Buffer<std::int16_t> group_, scratch_group_;
     Buffer<ParticleId> id_, scratch_id_;
