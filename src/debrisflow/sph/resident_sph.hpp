@@ -24,6 +24,7 @@
 #include "debrisflow/sph/sph_solver_gather.hpp"
 #include "debrisflow/sph/step_limit.hpp"
 #include "debrisflow/sph/time_schemes_k.hpp"
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <type_traits>
@@ -172,8 +173,10 @@ public:
     void publish() override {
         if (!resident_) return;
         ++copies_;
+        const std::vector<ParticleId> host_ids = set_.id; // the order of the host's wall geometry
         auto fields = real_fields(set_);
-        for (std::size_t f = 0; f < fields.size(); ++f) download(real_[f], *fields[f]);
+        for (std::size_t f = 0; f < fields.size(); ++f)
+            if (held(f)) download(real_[f], *fields[f]);
         if (set_.keeps_previous_state()) {
             auto old = old_fields(set_);
             for (std::size_t f = 0; f < old.size(); ++f) download(old_[f], *old[f]);
@@ -182,6 +185,7 @@ public:
         download(kind_, set_.kind);
         download(group_, set_.group);
         download(id_, set_.id);
+        if (!geometry_) reorder_wall_geometry(host_ids);
         set_.layout_changed();
         host_.rebuild_grid();
     }
@@ -252,7 +256,8 @@ public:
             group[j] = q.group;
             id[j] = first + ParticleId(j);
         }
-        for (std::size_t f = 0; f < kReal; ++f) append_tail(real_[f], real[f], 1);
+        for (std::size_t f = 0; f < kReal; ++f)
+            if (held(f)) append_tail(real_[f], real[f], 1);
         if (set_.keeps_previous_state())
             for (std::size_t f = 0; f < old_.size(); ++f) // vx, vy, vz, rho at t_n-1
                 append_tail(old_[f], real[f < 3 ? 3 + f : 9], 1);
@@ -293,6 +298,40 @@ private:
         return {&s.x,   &s.y,    &s.z, &s.vx,   &s.vy,  &s.vz,  &s.ax,  &s.ay, &s.az,
                 &s.rho, &s.drho, &s.p, &s.mass, &s.wnx, &s.wny, &s.wnz, &s.wd, &s.mu};
     }
+    // The wall geometry (normal and depth, arrays 13 .. 16) is held only where a functor of
+    // this case reads or writes it: mDBC, a no-slip wall's viscous terms, the bodies' motion.
+    // Otherwise it stays on the host (fixed walls keep it; fluid has none), reordered by id
+    // when the particles are published: 32 B per particle less.
+    bool needs_wall_geometry() const {
+        const SphParams& p = host_.params();
+        const bool viscous_walls = std::visit(
+            [](const auto& v) {
+                using V = std::decay_t<decltype(v)>;
+                return V::no_slip_walls || V::needs_apparent_viscosity;
+            },
+            host_.models().viscosity);
+        return p.boundary == "mdbc" || viscous_walls || bodies_ != nullptr;
+    }
+    bool held(std::size_t field) const { return geometry_ || field < 13 || field > 16; }
+
+    // The host's wall geometry, in the order of `host_ids`, put in the order of the published
+    // ids (particles added since: none).
+    void reorder_wall_geometry(const std::vector<ParticleId>& host_ids) {
+        ParticleId top = 0;
+        for (const ParticleId id : set_.id) top = std::max(top, id + 1);
+        std::vector<Index> from(std::size_t(top), -1);
+        for (std::size_t k = 0; k < host_ids.size(); ++k)
+            if (host_ids[k] < top) from[std::size_t(host_ids[k])] = Index(k);
+        for (auto* a : {&set_.wnx, &set_.wny, &set_.wnz, &set_.wd}) {
+            std::vector<Real> out(set_.id.size(), Real(0));
+            for (std::size_t i = 0; i < out.size(); ++i) {
+                const Index k = from[std::size_t(set_.id[i])];
+                if (k >= 0) out[i] = (*a)[std::size_t(k)];
+            }
+            a->swap(out);
+        }
+    }
+
     static std::array<std::vector<Real>*, 4> old_fields(particles::ParticleSet& s) {
         return {&s.vx_old, &s.vy_old, &s.vz_old, &s.rho_old};
     }
@@ -309,8 +348,10 @@ private:
     void upload_once() {
         if (resident_) return;
         n_ = set_.size();
+        geometry_ = needs_wall_geometry();
         auto fields = real_fields(set_);
-        for (std::size_t f = 0; f < fields.size(); ++f) upload(real_[f], *fields[f]);
+        for (std::size_t f = 0; f < fields.size(); ++f)
+            if (held(f)) upload(real_[f], *fields[f]);
         if (set_.keeps_previous_state()) {
             auto old = old_fields(set_);
             for (std::size_t f = 0; f < old.size(); ++f) upload(old_[f], *old[f]);
@@ -379,7 +420,8 @@ private:
     // Every per-particle array gathered into the grid's order, each into a scratch array of
     // its type that then takes its place; the order becomes the identity.
     void permute() {
-        for (auto& a : real_) gather(a, real_scratch(), 1);
+        for (std::size_t f = 0; f < kReal; ++f)
+            if (held(f)) gather(real_[f], real_scratch(), 1);
         if (set_.keeps_previous_state())
             for (auto& a : old_) gather(a, real_scratch(), 1);
         if (sps_) gather(tau_, tau_next_, 6); // tau_next_ is free between force evaluations
@@ -444,7 +486,8 @@ private:
         pos_.resize(n_);
         const Index m = Space::exclusive_scan(n_, keep_.data(), pos_.data());
         if (m == n_) return;
-        for (auto& a : real_) scatter(a, real_scratch(), 1, m);
+        for (std::size_t f = 0; f < kReal; ++f)
+            if (held(f)) scatter(real_[f], real_scratch(), 1, m);
         if (set_.keeps_previous_state())
             for (auto& a : old_) scatter(a, real_scratch(), 1, m);
         if (sps_) {
@@ -495,6 +538,7 @@ private:
     neighbors::GridView grid_{};
     Index keys_count_ = 0, n_ = 0;
     bool sps_ = false, resident_ = false;
+    bool geometry_ = true; // the wall geometry is held here (needs_wall_geometry)
     std::array<Buffer<Real>, kReal> real_;
     std::array<Buffer<Real>, 4> old_;   // Verlet: v and rho at t_n-1
     std::array<Buffer<Real>, 7> start_; // symplectic: x, v and rho at t_n
