@@ -194,13 +194,11 @@ public:
     std::size_t memory_bytes() const override {
         std::size_t b = sorter_bytes() + keys_.bytes() + order_.bytes() + start_cells_.bytes() +
                         tau_.bytes() + tau_next_.bytes() + kind_.bytes() + group_.bytes() +
-                        id_.bytes() + ghost_.bytes() + scratch_kind_.bytes() +
-                        scratch_group_.bytes() + scratch_id_.bytes() + leave_.bytes() +
-                        pos_.bytes();
+                        id_.bytes() + ghost_.bytes() + leave_.bytes() + pos_.bytes();
         for (const auto& a : real_) b += a.bytes();
         for (const auto& a : old_) b += a.bytes();
         for (const auto& a : start_) b += a.bytes();
-        if (bodies_) b += row_.bytes() + scratch_row_.bytes() + bodies_->bytes();
+        if (bodies_) b += row_.bytes() + bodies_->bytes();
         b += reader_.bytes();
         return b;
     }
@@ -425,11 +423,19 @@ private:
         if (set_.keeps_previous_state())
             for (auto& a : old_) gather(a, real_scratch(), 1);
         if (sps_) gather(tau_, tau_next_, 6); // tau_next_ is free between force evaluations
-        gather(kind_, scratch_kind_, 1);
-        gather(group_, scratch_group_, 1);
-        gather(id_, scratch_id_, 1);
-        if (bodies_) gather(row_, scratch_row_, 1);
+        gather_through(kind_);
+        gather_through(group_);
+        gather_through(id_);
+        if (bodies_) gather_through(row_);
         ++layout_;
+    }
+    // The same for an array of a narrower type, through the Real scratch as a carrier of its
+    // bytes (gathered there, then copied back): no scratch array of its own.
+    template <class T> void gather_through(Buffer<T>& a) {
+        Buffer<Real>& carrier = real_scratch();
+        carrier.resize(n_);
+        Space::for_each(n_, GatherIntoCarrier<T, Real>{a.data(), order_.data(), carrier.data()});
+        Space::for_each(n_, FromCarrier<T, Real>{carrier.data(), a.data()});
     }
     template <class T> void gather(Buffer<T>& a, Buffer<T>& scratch, int width) {
         scratch.resize(width * n_);
@@ -494,13 +500,21 @@ private:
             scatter(tau_, tau_next_, 6, m);
             tau_next_.resize(6 * m);
         }
-        scatter(kind_, scratch_kind_, 1, m);
-        scatter(group_, scratch_group_, 1, m);
-        scatter(id_, scratch_id_, 1, m);
-        if (bodies_) scatter(row_, scratch_row_, 1, m);
+        scatter_through(kind_, m);
+        scatter_through(group_, m);
+        scatter_through(id_, m);
+        if (bodies_) scatter_through(row_, m);
         ++layout_;
         n_ = m;
         Space::synchronize();
+    }
+    template <class T> void scatter_through(Buffer<T>& a, Index m) {
+        Buffer<Real>& carrier = real_scratch();
+        carrier.resize(n_);
+        Space::for_each(
+            n_, ScatterIntoCarrier<T, Real>{a.data(), keep_.data(), pos_.data(), carrier.data()});
+        a.resize(m);
+        Space::for_each(m, FromCarrier<T, Real>{carrier.data(), a.data()});
     }
     template <class T> void scatter(Buffer<T>& a, Buffer<T>& scratch, int width, Index m) {
         scratch.resize(width * m);
@@ -544,16 +558,16 @@ private:
     std::array<Buffer<Real>, 7> start_; // symplectic: x, v and rho at t_n
     Buffer<Real> tau_, tau_next_;
     Buffer<Real> ghost_; // mDBC's no-slip: (v_g - v_b, seen) per particle, each evaluation
-    Buffer<std::uint8_t> kind_, scratch_kind_;
-    Buffer<std::int16_t> group_, scratch_group_;
-    Buffer<ParticleId> id_, scratch_id_;
+    Buffer<std::uint8_t> kind_;
+    Buffer<std::int16_t> group_;
+    Buffer<ParticleId> id_;
     Buffer<Index> keys_, order_, start_cells_;
     // Stream compaction: the keep flags (in keys_, which only the grid's build uses), the
     // leavers' flags and the scan.
     Buffer<Index>& keep_ = keys_;
     Buffer<Index> leave_, pos_;
     // Rigid bodies: each particle's body-particle row (or -1), and the bodies' fluid side.
-    Buffer<std::int32_t> row_, scratch_row_;
+    Buffer<std::int32_t> row_;
     std::unique_ptr<ResidentBodies<Space>> bodies_;
     std::uint64_t layout_ = 0; // changes when particles are reordered, removed or added
     ResidentFluidReader<Space> reader_{*this}; // the probes' point samples and reductions

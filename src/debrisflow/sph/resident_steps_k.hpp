@@ -6,6 +6,7 @@
 #include "debrisflow/flow/outlet_box_k.hpp"
 #include "debrisflow/particles/particle_set.hpp"
 #include "debrisflow/sph/time_schemes_k.hpp"
+#include <cstring>
 #include <type_traits>
 
 namespace debrisflow::sph {
@@ -56,6 +57,41 @@ template <class T> struct ScatterKept {
         const std::size_t to = std::size_t(at[i]) * width, from = std::size_t(i) * width;
         for (int k = 0; k < width; ++k) out[to + k] = in[from + k];
     }
+};
+
+// Gathers and scatters of a narrow array through a wider carrier array (a scratch of another
+// type): item i's bytes are copied into the carrier's slot, then back (FromCarrier).
+// carrier[i] <- the bytes of in[order[i]].
+template <class T, class C> struct GatherIntoCarrier {
+    static_assert(sizeof(T) <= sizeof(C));
+    const T* in;
+    const Index* order;
+    C* carrier;
+    DF_HD void operator()(Index i) const {
+        C c{};
+        memcpy(&c, in + order[i], sizeof(T));
+        carrier[i] = c;
+    }
+};
+// carrier[at[i]] <- the bytes of in[i] for the items with keep[i] (stream compaction).
+template <class T, class C> struct ScatterIntoCarrier {
+    static_assert(sizeof(T) <= sizeof(C));
+    const T* in;
+    const Index* keep;
+    const Index* at;
+    C* carrier;
+    DF_HD void operator()(Index i) const {
+        if (!keep[i]) return;
+        C c{};
+        memcpy(&c, in + i, sizeof(T));
+        carrier[at[i]] = c;
+    }
+};
+// out[i] <- the bytes in carrier[i].
+template <class T, class C> struct FromCarrier {
+    const C* carrier;
+    T* out;
+    DF_HD void operator()(Index i) const { memcpy(out + i, carrier + i, sizeof(T)); }
 };
 
 // keep[i] = 0 for the boundary particles of wall group `group` (a gate lifting), 1 otherwise.
