@@ -42,17 +42,10 @@ template <class K, class... V> void instantiate_viscosities(models::Registry<V..
     (instantiate_interaction<K, V, models::Fourtakas>(), ...);
 }
 
-// A probe's point sample evaluated on the device, one point per thread.
-template <class F, class T> struct AtPoints {
-    F f;
-    const Vec3* points;
-    T* out;
-    DF_HD void operator()(Index i) const { out[i] = f(points[i]); }
-};
-
 template <class K> void instantiate_kernel() {
-    launch(0, AtPoints<probes::ShepardSample<K>, probes::PointSample>{});
-    launch(0, AtPoints<probes::FilledFraction<K>, Real>{});
+    // a probe's point samples, one point per thread (the resident backend's FluidReader)
+    launch(0, probes::AtPoints<probes::ShepardSample<K>, probes::PointSample>{});
+    launch(0, probes::AtPoints<probes::FilledFraction<K>, Real>{});
     instantiate_viscosities<K>(static_cast<sph::ViscosityRegistry*>(nullptr));
     instantiate_interaction<K, models::ArtificialViscosity, models::NoDiffusion>();
     instantiate_interaction<K, models::ArtificialViscosity, models::MolteniColagrossi>();

@@ -67,8 +67,9 @@ public:
     virtual void reload() = 0;
 };
 
-// How `check` and the log name where each phase runs on `backend`.
-std::string backend_words(const std::string& backend);
+// How `check` and the log name where each phase runs on `backend` (`bodies`: the case has
+// rigid bodies).
+std::string backend_words(const std::string& backend, bool bodies);
 
 // The resident phase for `backend` ("host_resident" or "cuda") on the host solver's particles.
 // Throws InputError (naming `where`) when this build has no such backend.

@@ -17,13 +17,17 @@ void set_cuda_factory(ResidentFactory f) {
     cuda_factory = f;
 }
 
-std::string backend_words(const std::string& backend) {
+std::string backend_words(const std::string& backend, bool bodies) {
     if (backend == "host") return "host, every phase on the host's threads (OpenMP)";
     return backend + ", the SPH phase resident " +
            (backend == "cuda" ? "on the CUDA device"
                               : "in the host's memory and run on its threads, the device's code "
                                 "path") +
-           "; particles are copied to the host only for probes, frames, checkpoints and the end";
+           (bodies ? "; rigid bodies: fluid loads reduced and body particles moved there, the "
+                     "6-DOF update on the host"
+                   : "") +
+           "; particles are copied to the host only for frames, checkpoints, probes that read "
+           "every particle, and the end";
 }
 
 std::unique_ptr<ResidentPhase> make_resident_sph(const std::string& backend, SphSolver& host,
