@@ -22,10 +22,10 @@ struct RunReport {
     time::DtLimit initial_dt{0, ""};
     long pair_list_builds = 0;
     long fluid_end = 0, grains_end = 0; // at the end (inlets, feeds and outlets change them)
-    double particle_steps = 0; // sum over steps of the particles present (fluid, walls, grains)
-    std::size_t pairs = 0;     // half pair list entries at the end (pairs within support + skin)
-    std::size_t sph_bytes = 0; // memory the SPH phase holds at the end (SphSolver::memory_bytes)
-    long sph_particles = 0;    // fluid and boundary particles at the end
+    double particle_steps = 0;    // sum over steps of the particles present (fluid, walls, grains)
+    std::size_t pairs = 0;        // half pair list entries at the end (pairs within support + skin)
+    std::size_t sph_bytes = 0;    // memory the SPH phase holds at the end (SphSolver::memory_bytes)
+    long sph_particles = 0;       // fluid and boundary particles at the end
     long sph_copies_to_host = -1; // a resident backend's copies of the particles to the host
     // FEM solids: nodes, elements, eroded elements, critical step and FEM steps taken.
     long fem_nodes = 0, fem_elements = 0, fem_eroded = 0, fem_substeps = 0;

@@ -195,8 +195,8 @@ namespace {
 // What the resident backends (exec.backend = "host_resident" or "cuda") run so far: fluid and
 // walls (fixed, moving, removed by remove_at), inlets and outlets, domain exit, rigid bodies
 // built before the run (their 6-DOF update on the host), DBC and mDBC (with either no-slip),
-// every kernel, viscosity and diffusion model, both time schemes. Anything else is rejected here, so that
-// `check` rejects it too.
+// every kernel, viscosity and diffusion model, both time schemes. Anything else is rejected here,
+// so that `check` rejects it too.
 void require_backend_supports(const CaseSpec& c) {
     if (c.backend == "host") return;
     const auto no = [&](bool present, const std::string& what) {
