@@ -173,7 +173,8 @@ public:
     void publish() override {
         if (!resident_) return;
         ++copies_;
-        const std::vector<ParticleId> host_ids = set_.id; // the order of the host's wall geometry
+        std::vector<ParticleId> host_ids; // the order of the host's wall geometry, if kept there
+        if (!geometry_) host_ids = set_.id;
         auto fields = real_fields(set_);
         for (std::size_t f = 0; f < fields.size(); ++f)
             if (held(f)) download(real_[f], *fields[f]);
@@ -415,8 +416,9 @@ private:
         grid_.order = order_.data();
     }
 
-    // Every per-particle array gathered into the grid's order, each into a scratch array of
-    // its type that then takes its place; the order becomes the identity.
+    // Every per-particle array gathered into the grid's order: the Real ones into the Real
+    // scratch, which then takes their place, the narrower ones through it (gather_through),
+    // the SPS stress into tau_next_; the order becomes the identity.
     void permute() {
         for (std::size_t f = 0; f < kReal; ++f)
             if (held(f)) gather(real_[f], real_scratch(), 1);
