@@ -249,9 +249,12 @@ RunReport Simulation::run(const RunOptions& opt) {
                 f->apply(*rigid_, dem_ ? &grains_ : nullptr, solver_ ? &set_ : nullptr, s.t, s.dt);
             for (auto& out : outlets_) {
                 const long before = out->bodies_removed();
-                if (resident_) // fluid only (require_backend_supports)
+                if (resident_) {
+                    // the fluid where it is; the bodies on the host, their particles released
+                    // where they are (sph/resident_bodies.hpp)
                     out->tally_fluid(resident_->remove_fluid_inside(out->box()).mass);
-                else
+                    out->apply(nullptr, nullptr, rigid_.get());
+                } else
                     out->apply(solver_.get(), dem_.get(), rigid_.get());
                 if (out->bodies_removed() > before)
                     log_.line(fmt::format("t = {:.6g} s: {} rigid bod{} left through outlet '{}' "

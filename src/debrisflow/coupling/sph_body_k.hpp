@@ -96,6 +96,14 @@ struct OfBody {
     }
 };
 
+// keep[i] = 0 for body `body`'s particles, 1 for the others (a body that left through an
+// outlet takes its particles with it).
+struct KeepOffBody {
+    OfBody of;
+    Index* keep;
+    DF_HD void operator()(Index i) const { keep[i] = of(i) > 0 ? 0 : 1; }
+};
+
 static_assert(std::is_trivially_copyable_v<FollowBodies>);
 static_assert(std::is_trivially_copyable_v<MemberLoads>);
 

@@ -14,6 +14,7 @@ public:
         : Probe(std::move(name), every), set_(std::move(set)), position_(position), dim_(dim) {}
     std::vector<std::string> columns() const override;
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
+    bool reads_particles() const override { return false; } // the FEM solids
 
 private:
     std::string set_;
@@ -32,6 +33,7 @@ public:
         : Probe(std::move(name), every), unit_(dim == 2 ? "N/m" : "N") {}
     std::vector<std::string> columns() const override;
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
+    bool reads_particles() const override { return false; } // the FEM solids
 
 private:
     std::string unit_;
@@ -51,6 +53,7 @@ public:
           normal_(normal), axis_(axis), bins_(bins) {}
     std::vector<std::string> columns() const override;
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
+    bool reads_particles() const override { return false; } // the FEM solids
 
 private:
     std::string set_, unit_;

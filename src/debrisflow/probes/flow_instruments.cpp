@@ -1,10 +1,10 @@
 #include "debrisflow/probes/flow_instruments.hpp"
 #include "debrisflow/dem/dem_solver.hpp"
-#include "debrisflow/exec/parallel.hpp"
 #include "debrisflow/rigid/body_solver.hpp"
-#include "debrisflow/sph/sph_solver.hpp"
+#include "debrisflow/probes/fluid_reader.hpp"
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace debrisflow::probes {
 
@@ -83,16 +83,13 @@ std::vector<Real> DischargeProbe::sample(Real t, const ProbeContext& ctx) {
     std::vector<Real> out;
     const Real dt = started_ ? t - t_last_ : 0;
     if (fluid_) {
-        const auto& s = ctx.sph->particles();
-        const Vec3 p0 = point_, nn = n_;
         const Real inv_dp = 1 / dp_;
-        Real rate = exec::sum_of<Real>(s.size(), [&](Index i) -> Real {
-            if (s.kind[i] != 0) return 0;
-            const Real d = (s.x[i] - p0.x) * nn.x + (s.y[i] - p0.y) * nn.y + (s.z[i] - p0.z) * nn.z;
+        Real rate = 0;
+        for (const ParticleRow& r : ctx.fluid->rows(RowSelection::fluid_near(point_, n_, dp_))) {
+            const Real d = dot(r.x - point_, n_);
             const Real w = 1 - std::abs(d) * inv_dp; // hat of width 2 dp: sums to 1 on a lattice
-            if (w <= 0) return 0;
-            return w * s.mass[i] * (s.vx[i] * nn.x + s.vy[i] * nn.y + s.vz[i] * nn.z);
-        });
+            if (w > 0) rate += w * r.mass * dot(r.v, n_);
+        }
         rate *= inv_dp;
         if (!started_) fluid_rate_last_ = rate;
         fluid_cum_ += Real(0.5) * (rate + fluid_rate_last_) * dt; // trapezoid in time
@@ -181,23 +178,19 @@ std::vector<Real> DepositProbe::sample(Real, const ProbeContext& ctx) {
                 ms += ctx.rigid->bodies()[k].mass;
                 vs += ctx.rigid->models()[k].volume;
             }
-    if (ctx.sph) {
-        const auto& s = ctx.sph->particles();
-        for (Index i = 0; i < s.size(); ++i)
-            if (s.kind[i] == 0 && in_box({s.x[i], s.y[i], s.z[i]}, lo_, hi_))
-                vf += s.mass[i] / rho0_;
-    }
+    if (ctx.fluid)
+        for (const ParticleRow& r : ctx.fluid->rows(RowSelection::fluid_in(lo_, hi_, true)))
+            if (in_box(r.x, lo_, hi_)) vf += r.mass / rho0_;
     return {vs, ms, vf};
 }
 
 std::vector<Real> FlowSectionProbe::sample(Real, const ProbeContext& ctx) {
-    const auto& s = ctx.sph->particles();
     std::vector<Real> tops;
     Real u = 0;
-    for (Index i = 0; i < s.size(); ++i) {
-        if (s.kind[i] != 0 || !in_box({s.x[i], s.y[i], s.z[i]}, lo_, hi_)) continue;
-        tops.push_back(s.z[i] + Real(0.5) * dp_ - bed_);
-        u += s.vx[i];
+    for (const ParticleRow& r : ctx.fluid->rows(RowSelection::fluid_in(lo_, hi_, true))) {
+        if (!in_box(r.x, lo_, hi_)) continue;
+        tops.push_back(r.x.z + Real(0.5) * dp_ - bed_);
+        u += r.v.x;
     }
     if (tops.empty()) return {0, 0, 0, 0};
     std::sort(tops.begin(), tops.end());
@@ -209,15 +202,13 @@ std::vector<Real> FlowSectionProbe::sample(Real, const ProbeContext& ctx) {
 }
 
 std::vector<Real> FluidRunupProbe::sample(Real, const ProbeContext& ctx) {
-    const auto& s = ctx.sph->particles();
-    const Real m = 2 * dp_;
+    const Real m = 2 * dp_, far = std::numeric_limits<Real>::max();
+    // the fluid above and beside the wall's box, within 2 dp of it in plan
+    const RowSelection near_wall =
+        RowSelection::fluid_in({lo_.x - m, lo_.y - m, -far}, {hi_.x + m, hi_.y + m, far}, dim_ == 3);
     Real top = 0;
-    for (Index i = 0; i < s.size(); ++i) {
-        if (s.kind[i] != 0) continue;
-        if (s.x[i] < lo_.x - m || s.x[i] > hi_.x + m) continue;
-        if (dim_ == 3 && (s.y[i] < lo_.y - m || s.y[i] > hi_.y + m)) continue;
-        top = std::max(top, s.z[i] + Real(0.5) * dp_ - bed_);
-    }
+    for (const ParticleRow& r : ctx.fluid->rows(near_wall))
+        top = std::max(top, r.x.z + Real(0.5) * dp_ - bed_);
     return {top};
 }
 

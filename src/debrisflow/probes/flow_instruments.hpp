@@ -39,6 +39,7 @@ public:
     std::vector<std::string> columns() const override;
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
     void extra_state(checkpoint::Archive& ar) override;
+    bool reads_particles() const override { return false; } // rows near the plane, ctx.fluid
 
 private:
     Vec3 point_, n_;
@@ -64,6 +65,7 @@ public:
     }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
     void extra_state(checkpoint::Archive& ar) override;
+    bool reads_particles() const override { return false; } // grains and bodies
 
 private:
     SolidCrossing up_, down_;
@@ -84,6 +86,7 @@ public:
         return {"solid_volume [m3]", "solid_mass [kg]", "fluid_volume [m3]"};
     }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
+    bool reads_particles() const override { return false; } // rows, ctx.fluid
 
 private:
     Vec3 lo_, hi_;
@@ -105,6 +108,7 @@ public:
         return {"h [m]", "v [m/s]", "q [m2/s]", "Fr [-]"};
     }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
+    bool reads_particles() const override { return false; } // rows, ctx.fluid
 
 private:
     Vec3 lo_, hi_;
@@ -124,6 +128,7 @@ public:
           dim_(c.dim) {}
     std::vector<std::string> columns() const override { return {"runup [m]"}; }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
+    bool reads_particles() const override { return false; } // rows, ctx.fluid
 
 private:
     Vec3 lo_, hi_;

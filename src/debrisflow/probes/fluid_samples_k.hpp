@@ -96,7 +96,88 @@ struct WallLoadComponent {
     DF_HD Real operator()(Index i) const { return load(i)[axis]; }
 };
 
+// A particle that a probe reads on the host (FluidReader::rows): the few it selects, not the
+// arrays.
+struct ParticleRow {
+    ParticleId id = 0;
+    Vec3 x, v, a;
+    Real mass = 0, rho = 0;
+};
+
+// Which particles FluidReader::rows brings back: fluid in a closed box (y ignored unless
+// use_y: a 2D case's particles lie at y = 0), the boundary particles of one wall, or fluid
+// within `width` of a plane. A probe applies its own exact test to what comes back.
+struct RowSelection {
+    enum class What : std::uint8_t { fluid_in_box, wall, fluid_near_plane };
+    What what = What::fluid_in_box;
+    Vec3 lo, hi;
+    bool use_y = true;
+    int group = -1;
+    Vec3 point, normal;
+    Real width = 0;
+
+    static RowSelection fluid_in(Vec3 lo, Vec3 hi, bool use_y) {
+        RowSelection s;
+        s.lo = lo, s.hi = hi, s.use_y = use_y;
+        return s;
+    }
+    static RowSelection wall_particles(int group) {
+        RowSelection s;
+        s.what = What::wall, s.group = group;
+        return s;
+    }
+    static RowSelection fluid_near(Vec3 point, Vec3 normal, Real width) {
+        RowSelection s;
+        s.what = What::fluid_near_plane, s.point = point, s.normal = normal, s.width = width;
+        return s;
+    }
+    DF_HD bool operator()(const particles::ParticleView& pv, Index i) const {
+        if (what == What::wall) return !pv.is_fluid(i) && pv.group[i] == group;
+        if (!pv.is_fluid(i)) return false;
+        if (what == What::fluid_near_plane) {
+            const Real d = (pv.x[i] - point.x) * normal.x + (pv.y[i] - point.y) * normal.y +
+                           (pv.z[i] - point.z) * normal.z;
+            return d < width && d > -width;
+        }
+        return pv.x[i] >= lo.x && pv.x[i] <= hi.x && pv.z[i] >= lo.z && pv.z[i] <= hi.z &&
+               (!use_y || (pv.y[i] >= lo.y && pv.y[i] <= hi.y));
+    }
+};
+
+// flag[i] = 1 for a selected particle, 0 otherwise (the rows' stream compaction).
+struct FlagSelected {
+    particles::ParticleView pv;
+    RowSelection selection;
+    Index* flag;
+    DF_HD void operator()(Index i) const { flag[i] = selection(pv, i) ? 1 : 0; }
+};
+
+DF_HD inline ParticleRow row_of(const particles::ParticleView& pv, ParticleId id, Index i) {
+    ParticleRow r;
+    r.id = id;
+    r.x = pv.pos(i);
+    r.v = pv.vel(i);
+    r.a = {pv.ax[i], pv.ay[i], pv.az[i]};
+    r.mass = pv.mass[i];
+    r.rho = pv.rho[i];
+    return r;
+}
+
+// out[at[i]] = particle i's row for each flagged i (at: the exclusive scan of the flags).
+struct GatherRows {
+    particles::ParticleView pv;
+    const ParticleId* id;
+    const Index* flag;
+    const Index* at;
+    ParticleRow* out;
+    DF_HD void operator()(Index i) const {
+        if (flag[i]) out[at[i]] = row_of(pv, id[i], i);
+    }
+};
+
 static_assert(std::is_trivially_copyable_v<FrontCoordinate>);
+static_assert(std::is_trivially_copyable_v<RowSelection>);
+static_assert(std::is_trivially_copyable_v<ParticleRow>);
 static_assert(std::is_trivially_copyable_v<WallParticleLoad>);
 
 } // namespace debrisflow::probes

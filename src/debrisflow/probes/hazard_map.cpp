@@ -1,6 +1,6 @@
 #include "debrisflow/probes/hazard_map.hpp"
 #include "debrisflow/checkpoint/archive.hpp"
-#include "debrisflow/sph/sph_solver.hpp"
+#include "debrisflow/probes/fluid_reader.hpp"
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -36,20 +36,19 @@ std::vector<Real> HazardMapProbe::sample(Real, const ProbeContext& ctx) {
     const std::size_t n = h_max_.size();
     std::vector<Real> top(n, -std::numeric_limits<Real>::max()), mass(n, 0), mrho(n, 0);
     std::vector<Vec3> mom(n);
-    const auto& s = ctx.sph->particles();
     const Real dx = (hi_.x - lo_.x) / nx_, dy = (hi_.y - lo_.y) / ny_;
-    for (Index i = 0; i < s.size(); ++i) {
-        if (s.kind[i] != std::uint8_t(particles::Kind::fluid)) continue;
-        const Real x = s.x[i], y = s.y[i], z = s.z[i];
+    // the fluid over the plan box (its rows, in the order of their ids)
+    for (const ParticleRow& r : ctx.fluid->rows(RowSelection::fluid_in(lo_, hi_, dim_ == 3))) {
+        const Real x = r.x.x, y = r.x.y, z = r.x.z;
         if (x < lo_.x || x >= hi_.x || z < lo_.z || z > hi_.z) continue;
         if (dim_ == 3 && (y < lo_.y || y >= hi_.y)) continue;
         const int cx = std::min(nx_ - 1, int((x - lo_.x) / dx));
         const int cy = dim_ == 3 ? std::min(ny_ - 1, int((y - lo_.y) / dy)) : 0;
         const std::size_t k = std::size_t(cx) + std::size_t(nx_) * std::size_t(cy);
         top[k] = std::max(top[k], z + half_dp_);
-        mass[k] += s.mass[i];
-        mrho[k] += s.mass[i] * s.rho[i];
-        mom[k] += s.mass[i] * Vec3{s.vx[i], dim_ == 3 ? s.vy[i] : Real(0), 0};
+        mass[k] += r.mass;
+        mrho[k] += r.mass * r.rho;
+        mom[k] += r.mass * Vec3{r.v.x, dim_ == 3 ? r.v.y : Real(0), 0};
     }
     Real h_all = 0, v_all = 0, f_all = 0;
     for (std::size_t k = 0; k < n; ++k) {

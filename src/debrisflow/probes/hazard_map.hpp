@@ -25,6 +25,7 @@ public:
         return {"h_max [m]", "v_max [m/s]", "momentum_flux_max [N/m]"};
     }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
+    bool reads_particles() const override { return false; } // the plan box's rows, ctx.fluid
     void open_extra(const std::string& dir) override { dir_ = dir; }
     void after_sample(Real t, const std::vector<Real>& values) override;
     void extra_state(checkpoint::Archive& ar) override;

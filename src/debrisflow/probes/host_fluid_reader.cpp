@@ -50,4 +50,14 @@ Vec3 HostFluidReader::wall_load(int group) const {
     return f;
 }
 
+std::vector<ParticleRow> HostFluidReader::select(const RowSelection& selection) const {
+    const auto pv = view_of(solver_);
+    const auto& id = solver_.particles().id;
+    std::vector<ParticleRow> out;
+    for (Index i = 0; i < pv.n; ++i) {
+        if (selection(pv, i)) out.push_back(row_of(pv, id[std::size_t(i)], i));
+    }
+    return out;
+}
+
 } // namespace debrisflow::probes

@@ -1,4 +1,5 @@
 #include "debrisflow/probes/pressure_map.hpp"
+#include "debrisflow/probes/fluid_reader.hpp"
 #include "debrisflow/checkpoint/archive.hpp"
 #include "debrisflow/dem/dem_solver.hpp"
 #include "debrisflow/rigid/body_solver.hpp"
@@ -103,30 +104,45 @@ void PressureMapProbe::spread(Real u0, Real u1, Real v0, Real v1, Real load, Rea
     }
 }
 
+void PressureMapProbe::wall_geometry(const sph::SphSolver& solver) {
+    // The host's copy: its ids and wall geometry agree, even where a resident backend has
+    // moved on since it was last published (the geometry of a wall that stays put does not
+    // change).
+    const auto& s = solver.particles();
+    for (Index i = 0; i < s.size(); ++i)
+        if (s.kind[i] != 0 && s.group[i] == wall_)
+            geometry_.push_back({s.id[i], {s.wnx[i], s.wny[i], s.wnz[i]}, s.wd[i]});
+    std::sort(geometry_.begin(), geometry_.end(),
+              [](const WallParticle& a, const WallParticle& b) { return a.id < b.id; });
+    geometry_read_ = true;
+}
+
 std::vector<Real> PressureMapProbe::sample(Real, const ProbeContext& ctx) {
     const std::size_t np = std::size_t(nu_) * std::size_t(nv_);
     std::vector<Real> force(np, 0), tiles(np, 0);
-    if (ctx.sph) {
-        const auto& s = ctx.sph->particles();
+    if (ctx.fluid) {
+        if (!geometry_read_) wall_geometry(*ctx.sph);
         const Real half = Real(0.5) * dp_;
         const Real tile_area = dim_ == 2 ? dp_ : dp_ * dp_; // 2D: per metre of width
-        for (Index i = 0; i < s.size(); ++i) {
-            if (s.kind[i] == 0 || s.group[i] != wall_) continue;
+        // The wall's particles in the order of their ids, as is its geometry.
+        auto g = geometry_.begin();
+        for (const ParticleRow& r : ctx.fluid->rows(RowSelection::wall_particles(wall_))) {
+            while (g != geometry_.end() && g->id < r.id) ++g;
+            if (g == geometry_.end() || g->id != r.id) continue; // none: not a wall particle
             // This face's particles only (a solid's back face does not load its front panels):
             // those that stand for it, and those of the side faces within a kernel support of
             // it (and on its half of the wall), which the fluid in a corner pushes along the
             // normal too; the side faces' surface-layer column (a box's corner column) is part
             // of this face's extent.
-            const Vec3 x{s.x[i], s.y[i], s.z[i]};
-            const Real along = s.wnx[i] * normal_.x + s.wny[i] * normal_.y + s.wnz[i] * normal_.z;
+            const Vec3 x = r.x;
+            const Real along = dot(g->normal, normal_);
             const Real from_face = std::abs(x[axis_] - face_);
             const bool side = std::abs(along) < Real(0.5) && from_face < reach_;
             const bool edge = side && from_face < dp_;
             if (along < Real(0.5) && !side) continue;
-            const Real load =
-                -s.mass[i] * (s.ax[i] * normal_.x + s.ay[i] * normal_.y + s.az[i] * normal_.z);
+            const Real load = -r.mass * dot(r.a, normal_);
             // the column's tile counts once, at its surface-layer particle (depth dp/2)
-            const Real a = edge || (!side && s.wd[i] < dp_) ? tile_area : 0;
+            const Real a = edge || (!side && g->depth < dp_) ? tile_area : 0;
             spread(x[u_] - half, x[u_] + half, x[v_] - half, x[v_] + half, load, a, force, tiles);
         }
     }

@@ -13,6 +13,8 @@ namespace debrisflow::probes {
 //    dp x 1 m) of the face around it. Load and tile are split between panels by overlap.
 //  - Grains and bodies: each contact's force on the wall, -F . n, in the panel holding its
 //    contact point (contacts on this face only).
+// The fluid's particles come as rows of the wall's particles (FluidReader::rows), in the order
+// of their ids, wherever the particles are stored.
 // Panel pressure = panel load / panel area, the area being the particle tiles inside the panel
 // (the face's real extent, so that panels narrower than dp or not a multiple of it read the
 // same pressure), or the panel's geometric area where no particle tiles it (no fluid).
@@ -25,6 +27,7 @@ public:
     PressureMapProbe(std::string name, Real every, int wall, int axis, Vec3 normal, int nu, int nv,
                      const io::CaseSpec& c);
     int contact_wall() const override { return wall_; }
+    bool reads_particles() const override { return false; } // the wall's rows, ctx.fluid
     std::vector<std::string> columns() const override;
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
     void open_extra(const std::string& dir) override;
@@ -39,6 +42,15 @@ private:
                 std::vector<Real>& force, std::vector<Real>& area) const;
     // The panel holding the face point (u, v), or -1 off the face.
     long panel_of(Real u, Real v) const;
+    // The wall's particles' normals and depths, by id (geometry_), read once.
+    void wall_geometry(const sph::SphSolver& solver);
+    struct WallParticle {
+        ParticleId id;
+        Vec3 normal; // into the fluid
+        Real depth;  // behind the wall's surface
+    };
+    std::vector<WallParticle> geometry_; // in the order of the ids
+    bool geometry_read_ = false;
     std::unique_ptr<io::VtkSeries> vtk_;
     io::VtkSeries::Entries resume_frames_; // frames of a restored run, for open_extra
     int wall_, axis_, u_, v_, nu_, nv_;

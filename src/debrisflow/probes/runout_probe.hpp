@@ -38,6 +38,7 @@ public:
                 "height [m]", "detached [-]", "detached_mass [kg]"};
     }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
+    bool reads_particles() const override { return false; } // the grains (and bodies)
 
 private:
     int axis_, sign_;

@@ -70,9 +70,10 @@ public:
         throw std::logic_error("resident SPH: bodies added during a run (rock feeds) run on the "
                                "host backend");
     }
-    void release(int, std::vector<std::uint8_t>&) override {
-        throw std::logic_error("resident SPH: bodies leaving through an outlet run on the host "
-                               "backend");
+    // Removes body b's particles where they are, at once (`keep`, the host's list of
+    // particles to remove, is left as it is).
+    void release(int b, std::vector<std::uint8_t>&) override {
+        sph_.remove_where(coupling::KeepOffBody{{rows(), std::int32_t(b)}, nullptr});
     }
     std::size_t particles_of(int b) const override {
         return std::size_t(Space::sum_of(sph_.n_, coupling::OfBody{rows(), std::int32_t(b)}));

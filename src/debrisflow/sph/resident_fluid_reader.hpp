@@ -1,8 +1,8 @@
 #pragma once
-// The point and reduction probes' view of a resident backend's fluid (probes/fluid_reader.hpp):
-// evaluated where the particles are, on the resident grid, with fluid_samples_k.hpp's rules;
-// only the points go there and their few values come back (issue #33), so these probes do
-// not copy the particles to the host.
+// The probes' view of a resident backend's fluid (probes/fluid_reader.hpp): evaluated where the
+// particles are, on the resident grid, with fluid_samples_k.hpp's rules; only the points go
+// there and their few values, or the selected particles' rows, come back (issue #33), so no
+// probe copies the particle arrays to the host.
 #include "debrisflow/probes/fluid_reader.hpp"
 #include <limits>
 #include <variant>
@@ -37,7 +37,28 @@ public:
         return f;
     }
 
-    std::size_t bytes() const { return points_.bytes() + samples_.bytes() + fractions_.bytes(); }
+    std::size_t bytes() const {
+        return points_.bytes() + samples_.bytes() + fractions_.bytes() + flag_.bytes() +
+               at_.bytes() + rows_.bytes();
+    }
+
+protected:
+    // Stream compaction of the selected particles' rows (flags, their exclusive scan, a
+    // gather); only the rows come back.
+    std::vector<probes::ParticleRow> select(const probes::RowSelection& selection) const override {
+        const Index n = sph_.size();
+        flag_.resize(n);
+        at_.resize(n);
+        const auto pv = sph_.view();
+        Space::for_each(n, probes::FlagSelected{pv, selection, flag_.data()});
+        const Index m = Space::exclusive_scan(n, flag_.data(), at_.data());
+        rows_.resize(m);
+        Space::for_each(n, probes::GatherRows{pv, sph_.id_.data(), flag_.data(), at_.data(),
+                                              rows_.data()});
+        std::vector<probes::ParticleRow> rows(static_cast<std::size_t>(m));
+        if (m > 0) rows_.download(rows.data());
+        return rows;
+    }
 
 private:
     // f(x) at every point with the case's kernel, f = Sampler<Kernel>{particles, grid, kernel}.
@@ -63,6 +84,8 @@ private:
     mutable Buffer<Vec3> points_;
     mutable Buffer<probes::PointSample> samples_;
     mutable Buffer<Real> fractions_;
+    mutable Buffer<Index> flag_, at_; // the rows' selection flags and positions
+    mutable Buffer<probes::ParticleRow> rows_;
 };
 
 } // namespace debrisflow::sph

@@ -206,8 +206,16 @@ public:
     Index size() const override { return resident_ ? n_ : set_.size(); }
 
     void remove_group(std::int16_t group) override {
+        remove_where(KeepOutsideGroup{view(), group, nullptr});
+    }
+
+    // Removes the particles that `flags` (a functor with a `keep` pointer, which is set here)
+    // marks 0, by stream compaction.
+    template <class Flags> void remove_where(Flags flags) {
+        upload_once();
         keep_.resize(n_);
-        Space::for_each(n_, KeepOutsideGroup{view(), group, keep_.data()});
+        flags.keep = keep_.data();
+        Space::for_each(n_, flags);
         compact();
     }
 

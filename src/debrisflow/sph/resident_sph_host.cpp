@@ -26,8 +26,7 @@ std::string backend_words(const std::string& backend, bool bodies) {
            (bodies ? "; rigid bodies: fluid loads reduced and body particles moved there, the "
                      "6-DOF update on the host"
                    : "") +
-           "; particles are copied to the host only for frames, checkpoints, probes that read "
-           "every particle, and the end";
+           "; particles are copied to the host only for frames, checkpoints and the end";
 }
 
 std::unique_ptr<ResidentPhase> make_resident_sph(const std::string& backend, SphSolver& host,
