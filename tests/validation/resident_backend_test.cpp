@@ -143,6 +143,13 @@ TEST(ResidentBackend, BodyIntoOutletAndRowProbes) {
     check("cases/validation/gate_body_outlet2d.toml", {"output.vtk=false"}, 0.6, 0.01, 1000);
 }
 
+// The reduced slit check dam fed with rocks from a hopper (two placed by 0.15 s): the rows
+// of the particles near the hopper read where they are (is there room for a rock?), each new
+// rock's shell appended there with its body rows, the rows' id map kept by the host's coupling.
+TEST(ResidentBackend, RockFeed) {
+    check("cases/papers/slit_check_dam_reduced.toml", {"output.vtk=false"}, 0.15, 0.02, 1000);
+}
+
 // The demo case (Lobovsky dam break) with the Verlet scheme: the state at t_n-1 resident too.
 TEST(ResidentBackend, DamBreakVerlet) {
     check("cases/dambreak2d.toml", {"dp=0.015", "time.scheme=\"verlet\"", "output.vtk=false"}, 0.3,

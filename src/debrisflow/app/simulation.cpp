@@ -246,7 +246,7 @@ RunReport Simulation::run(const RunOptions& opt) {
             }
             for (auto& f : feeds_) f->apply(*dem_, s.t, s.dt);
             for (auto& f : rock_feeds_)
-                f->apply(*rigid_, dem_ ? &grains_ : nullptr, solver_ ? &set_ : nullptr, s.t, s.dt);
+                f->apply(*rigid_, dem_ ? &grains_ : nullptr, probe_context().fluid, s.t, s.dt);
             for (auto& out : outlets_) {
                 const long before = out->bodies_removed();
                 if (resident_) {

@@ -68,12 +68,20 @@ void SphBodyCoupling::follow(const std::vector<rigid::BodyState>& bodies, bool p
 void SphBodyCoupling::add_shell(int b, const rigid::BodyState& state,
                                 const std::vector<rigid::ShellPoint>& shell, Real rho,
                                 Real m_particle) {
+    if (shell.empty()) return;
     for (const auto& sp : shell) {
         set_.add(sp.p, state.vel + cross(state.omega(), sp.p - state.pos), rho, m_particle,
                  particles::Kind::boundary, std::int16_t(-1));
         set_.set_wall(set_.size() - 1, sp.n, sp.depth);
-        rows_.extra_rows.emplace(set_.id.back(), std::uint32_t(rows_.owner.size()));
-        rows_.append(b, state, sp.p, sp.n);
+    }
+    add_rows(b, state, shell, set_.id[set_.id.size() - shell.size()]);
+}
+
+void SphBodyCoupling::add_rows(int b, const rigid::BodyState& state,
+                               const std::vector<rigid::ShellPoint>& shell, ParticleId first_id) {
+    for (std::size_t k = 0; k < shell.size(); ++k) {
+        rows_.extra_rows.emplace(first_id + ParticleId(k), std::uint32_t(rows_.owner.size()));
+        rows_.append(b, state, shell[k].p, shell[k].n);
     }
 }
 

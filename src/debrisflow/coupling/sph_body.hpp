@@ -61,6 +61,10 @@ public:
                    const std::vector<rigid::ShellPoint>& shell, Real rho, Real m_particle) override;
     void release(int b, std::vector<std::uint8_t>& keep) override;
     std::size_t particles_of(int b) const override;
+    // The rows of body b's shell points, whose particles were given the ids first_id,
+    // first_id + 1, ... (here by add_shell; by a resident backend where its particles are).
+    void add_rows(int b, const rigid::BodyState& state, const std::vector<rigid::ShellPoint>& shell,
+                  ParticleId first_id);
 
     // The body particles' rows (a resident backend takes them over: sph/resident_bodies.hpp).
     const BodyParticles& rows() const { return rows_; }

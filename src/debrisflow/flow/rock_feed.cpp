@@ -101,7 +101,7 @@ scenario::TriangleMesh RockFeed::make_rock(Real d, Real& ratio) {
 }
 
 void RockFeed::apply(rigid::BodySolver& bodies, const dem::GrainSet* grains,
-                     const particles::ParticleSet* fluid, Real t, Real dt) {
+                     const probes::FluidReader* fluid, Real t, Real dt) {
     accrue(t, dt);
     auto volume_of = [](Real d) { return pi * d * d * d / 6; };
     if (owed_ < volume_of(next_d_)) return;
@@ -117,11 +117,12 @@ void RockFeed::apply(rigid::BodySolver& bodies, const dem::GrainSet* grains,
         for (Index i = 0; i < grains->size(); ++i)
             if (near_region(grains->pos[std::size_t(i)]))
                 near.push_back({grains->pos[std::size_t(i)], grains->radius[std::size_t(i)]});
-    if (fluid)
-        for (Index i = 0; i < fluid->size(); ++i) {
-            const Vec3 p{fluid->x[i], fluid->y[i], fluid->z[i]};
-            if (near_region(p)) near.push_back({p, Real(0.5) * case_.dp});
-        }
+    if (fluid) {
+        const Vec3 grow{reach, reach, reach};
+        for (const auto& r : fluid->rows(probes::RowSelection::particles_in(spec_.min - grow,
+                                                                           spec_.max + grow)))
+            if (near_region(r.x)) near.push_back({r.x, Real(0.5) * case_.dp});
+    }
     std::uniform_real_distribution<Real> u(0, 1);
     auto& rng = sizes_.rng();
     constexpr int tries_per_rock = 200;

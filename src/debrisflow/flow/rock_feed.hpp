@@ -2,6 +2,7 @@
 #include "debrisflow/dem/grain_set.hpp"
 #include "debrisflow/flow/solid_feed.hpp"
 #include "debrisflow/particles/particle_set.hpp"
+#include "debrisflow/probes/fluid_reader.hpp"
 #include "debrisflow/scenario/stl_mesh.hpp"
 
 namespace debrisflow::rigid {
@@ -24,9 +25,10 @@ class RockFeed : public SolidFeed {
 public:
     RockFeed(const io::FeedSpec& spec, const io::CaseSpec& c);
 
-    // Releases what is owed after a step of dt ending at t.
+    // Releases what is owed after a step of dt ending at t; the SPH particles near the region
+    // come from `fluid` (the rows it selects, wherever the particles are).
     void apply(rigid::BodySolver& bodies, const dem::GrainSet* grains,
-               const particles::ParticleSet* fluid, Real t, Real dt);
+               const probes::FluidReader* fluid, Real t, Real dt);
 
     // Sphericity of library shape k.
     Real shape_sphericity(std::size_t k) const { return shapes_[k].sphericity; }

@@ -194,7 +194,7 @@ namespace {
 
 // What the resident backends (exec.backend = "host_resident" or "cuda") run so far: fluid and
 // walls (fixed, moving, removed by remove_at), inlets and outlets, domain exit, rigid bodies
-// built before the run (their 6-DOF update on the host; an outlet removes them with their
+// (their 6-DOF update on the host; rock feeds add them and outlets remove them with their
 // particles), DBC and mDBC (with either no-slip),
 // every kernel, viscosity and diffusion model, both time schemes. Anything else is rejected here,
 // so that `check` rejects it too.
@@ -209,7 +209,6 @@ void require_backend_supports(const CaseSpec& c) {
     };
     no(c.fluids.empty(), "no fluid");
     no(c.has_dem, "grains ([dem])");
-    no(!c.rigid.feeds.empty(), "a rock feed");
     no(c.has_fem(), "FEM solids");
 }
 

@@ -104,14 +104,16 @@ struct ParticleRow {
     Real mass = 0, rho = 0;
 };
 
-// Which particles FluidReader::rows brings back: fluid in a closed box (y ignored unless
-// use_y: a 2D case's particles lie at y = 0), the boundary particles of one wall, or fluid
-// within `width` of a plane. A probe applies its own exact test to what comes back.
+// Which particles FluidReader::rows brings back: fluid (or, not fluid_only, every particle) in
+// a closed box (y ignored unless use_y: a 2D case's particles lie at y = 0), the boundary
+// particles of one wall, or fluid within `width` of a plane. A probe applies its own exact
+// test to what comes back.
 struct RowSelection {
     enum class What : std::uint8_t { fluid_in_box, wall, fluid_near_plane };
     What what = What::fluid_in_box;
     Vec3 lo, hi;
     bool use_y = true;
+    bool fluid_only = true;
     int group = -1;
     Vec3 point, normal;
     Real width = 0;
@@ -119,6 +121,11 @@ struct RowSelection {
     static RowSelection fluid_in(Vec3 lo, Vec3 hi, bool use_y) {
         RowSelection s;
         s.lo = lo, s.hi = hi, s.use_y = use_y;
+        return s;
+    }
+    static RowSelection particles_in(Vec3 lo, Vec3 hi) {
+        RowSelection s = fluid_in(lo, hi, true);
+        s.fluid_only = false;
         return s;
     }
     static RowSelection wall_particles(int group) {
@@ -133,7 +140,7 @@ struct RowSelection {
     }
     DF_HD bool operator()(const particles::ParticleView& pv, Index i) const {
         if (what == What::wall) return !pv.is_fluid(i) && pv.group[i] == group;
-        if (!pv.is_fluid(i)) return false;
+        if (fluid_only && !pv.is_fluid(i)) return false;
         if (what == What::fluid_near_plane) {
             const Real d = (pv.x[i] - point.x) * normal.x + (pv.y[i] - point.y) * normal.y +
                            (pv.z[i] - point.z) * normal.z;

@@ -58,9 +58,9 @@ public:
     // host's set, as ParticleSet::add would.
     virtual void append(const std::vector<particles::NewParticle>& fresh) = 0;
     // Becomes the bodies' fluid side (before the run): their fluid loads reduced and their
-    // particles moved where the particles are (sph/resident_bodies.hpp).
-    virtual void couple_bodies(rigid::BodySolver& bodies,
-                               const coupling::SphBodyCoupling& coupling) = 0;
+    // particles moved, added (rock feeds) and removed (outlets) where the particles are
+    // (sph/resident_bodies.hpp); the host's coupling keeps the rows.
+    virtual void couple_bodies(rigid::BodySolver& bodies, coupling::SphBodyCoupling& coupling) = 0;
     // The probes' point samples and reductions, evaluated where the particles are.
     virtual const probes::FluidReader& fluid_reader() const = 0;
     // The host's ParticleSet was replaced (a checkpoint restored): take it over again now.

@@ -9,7 +9,6 @@
 #include "debrisflow/coupling/sph_body_k.hpp"
 #include "debrisflow/rigid/fluid_side.hpp"
 #include "debrisflow/sph/resident_steps_k.hpp"
-#include <stdexcept>
 #include <vector>
 
 namespace debrisflow::sph {
@@ -20,20 +19,19 @@ template <class Space> class ResidentBodies final : public rigid::FluidSide {
     template <class T> using Buffer = typename Space::template Buffer<T>;
 
 public:
-    // The rows of the bodies built before the run (bodies added during it are rejected for a
-    // resident backend: require_backend_supports).
-    ResidentBodies(ResidentSph<Space>& sph, const coupling::SphBodyCoupling& coupling)
-        : sph_(sph), rows_(coupling.rows()), initial_(coupling.initial_rows()) {
-        upload(owner_, rows_.owner);
-        upload(offset_, rows_.offset);
-        upload(normal_, rows_.normal);
+    // The rows stay the host coupling's (the id -> row map, which its checkpoint saves); the
+    // backend holds a copy of the row tables and each particle's row.
+    ResidentBodies(ResidentSph<Space>& sph, coupling::SphBodyCoupling& coupling)
+        : sph_(sph), coupling_(coupling) {
+        upload_rows();
     }
 
     // The row of each particle of the host's set (by persistent id), or -1.
     std::vector<std::int32_t> rows_of(const std::vector<ParticleId>& ids) const {
+        const auto& table = coupling_.rows();
         std::vector<std::int32_t> r(ids.size());
         for (std::size_t k = 0; k < ids.size(); ++k)
-            r[k] = std::int32_t(rows_.row(ids[k], initial_));
+            r[k] = std::int32_t(table.row(ids[k], coupling_.initial_rows()));
         return r;
     }
 
@@ -65,10 +63,21 @@ public:
         Space::synchronize();
     }
 
-    void add_shell(int, const rigid::BodyState&, const std::vector<rigid::ShellPoint>&, Real,
-                   Real) override {
-        throw std::logic_error("resident SPH: bodies added during a run (rock feeds) run on the "
-                               "host backend");
+    // A body added during the run (a rock feed's): its shell's particles appended where the
+    // particles are, as the host coupling's add_shell adds them, with their new rows.
+    void add_shell(int b, const rigid::BodyState& state, const std::vector<rigid::ShellPoint>& shell,
+                   Real rho, Real m_particle) override {
+        if (shell.empty()) return;
+        std::vector<particles::NewParticle> fresh;
+        std::vector<std::int32_t> rows;
+        const auto row0 = std::int32_t(coupling_.rows().owner.size());
+        for (const auto& sp : shell) {
+            fresh.push_back({sp.p, state.vel + cross(state.omega(), sp.p - state.pos), rho,
+                             m_particle, particles::Kind::boundary, std::int16_t(-1)});
+            rows.push_back(row0 + std::int32_t(rows.size()));
+        }
+        coupling_.add_rows(b, state, shell, sph_.append_particles(fresh, shell, rows));
+        upload_rows();
     }
     // Removes body b's particles where they are, at once (`keep`, the host's list of
     // particles to remove, is left as it is).
@@ -88,6 +97,12 @@ public:
 private:
     template <class T> static void upload(Buffer<T>& b, const std::vector<T>& v) {
         b.upload(v.data(), Index(v.size()));
+    }
+    void upload_rows() {
+        const auto& table = coupling_.rows();
+        upload(owner_, table.owner);
+        upload(offset_, table.offset);
+        upload(normal_, table.normal);
     }
 
     coupling::BodyRows rows() const {
@@ -112,8 +127,7 @@ private:
     }
 
     ResidentSph<Space>& sph_;
-    coupling::BodyParticles rows_; // on the host: the id -> row map
-    std::size_t initial_;
+    coupling::SphBodyCoupling& coupling_; // on the host: the rows and the id -> row map
     Buffer<std::int32_t> owner_;
     Buffer<Vec3> offset_, normal_;
     Buffer<rigid::BodyState> states_;

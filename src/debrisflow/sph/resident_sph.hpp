@@ -245,9 +245,17 @@ public:
 
     // The new particles' arrays as ParticleSet::add fills them, each uploaded after the last.
     void append(const std::vector<particles::NewParticle>& fresh) override {
+        append_particles(fresh, {}, {});
+    }
+
+    // As append, with each new particle's wall normal and depth (a body's shell) and body
+    // row when given; returns the first new particle's id (the others follow it).
+    ParticleId append_particles(const std::vector<particles::NewParticle>& fresh,
+                                const std::vector<rigid::ShellPoint>& walls,
+                                const std::vector<std::int32_t>& rows) {
         upload_once();
         const Index k = Index(fresh.size());
-        if (k == 0) return;
+        if (k == 0) return set_.claim_ids(0);
         std::array<std::vector<Real>, kReal> real;
         for (auto& column : real) column.assign(std::size_t(k), Real(0));
         std::vector<std::uint8_t> kind(fresh.size());
@@ -262,6 +270,10 @@ public:
             kind[j] = std::uint8_t(q.kind);
             group[j] = q.group;
             id[j] = first + ParticleId(j);
+            if (!walls.empty()) {
+                const auto& w = walls[j];
+                real[13][j] = w.n.x, real[14][j] = w.n.y, real[15][j] = w.n.z, real[16][j] = w.depth;
+            }
         }
         for (std::size_t f = 0; f < kReal; ++f)
             if (held(f)) append_tail(real_[f], real[f], 1);
@@ -272,13 +284,14 @@ public:
         append_tail(kind_, kind, 1);
         append_tail(group_, group, 1);
         append_tail(id_, id, 1);
-        if (bodies_) append_tail(row_, std::vector<std::int32_t>(fresh.size(), -1), 1);
+        if (bodies_)
+            append_tail(row_, rows.empty() ? std::vector<std::int32_t>(fresh.size(), -1) : rows, 1);
         ++layout_;
         n_ += k;
+        return first;
     }
 
-    void couple_bodies(rigid::BodySolver& bodies,
-                       const coupling::SphBodyCoupling& coupling) override {
+    void couple_bodies(rigid::BodySolver& bodies, coupling::SphBodyCoupling& coupling) override {
         if (resident_) throw std::logic_error("resident SPH: bodies are coupled before the run");
         bodies_ = std::make_unique<ResidentBodies<Space>>(*this, coupling);
         bodies.attach_fluid(bodies_.get());
