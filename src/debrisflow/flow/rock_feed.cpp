@@ -119,8 +119,8 @@ void RockFeed::apply(rigid::BodySolver& bodies, const dem::GrainSet* grains,
                 near.push_back({grains->pos[std::size_t(i)], grains->radius[std::size_t(i)]});
     if (fluid) {
         const Vec3 grow{reach, reach, reach};
-        for (const auto& r : fluid->rows(probes::RowSelection::particles_in(spec_.min - grow,
-                                                                           spec_.max + grow)))
+        for (const auto& r :
+             fluid->rows(probes::RowSelection::particles_in(spec_.min - grow, spec_.max + grow)))
             if (near_region(r.x)) near.push_back({r.x, Real(0.5) * case_.dp});
     }
     std::uniform_real_distribution<Real> u(0, 1);

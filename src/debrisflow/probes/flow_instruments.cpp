@@ -1,7 +1,7 @@
 #include "debrisflow/probes/flow_instruments.hpp"
 #include "debrisflow/dem/dem_solver.hpp"
-#include "debrisflow/rigid/body_solver.hpp"
 #include "debrisflow/probes/fluid_reader.hpp"
+#include "debrisflow/rigid/body_solver.hpp"
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -204,8 +204,8 @@ std::vector<Real> FlowSectionProbe::sample(Real, const ProbeContext& ctx) {
 std::vector<Real> FluidRunupProbe::sample(Real, const ProbeContext& ctx) {
     const Real m = 2 * dp_, far = std::numeric_limits<Real>::max();
     // the fluid above and beside the wall's box, within 2 dp of it in plan
-    const RowSelection near_wall =
-        RowSelection::fluid_in({lo_.x - m, lo_.y - m, -far}, {hi_.x + m, hi_.y + m, far}, dim_ == 3);
+    const RowSelection near_wall = RowSelection::fluid_in({lo_.x - m, lo_.y - m, -far},
+                                                          {hi_.x + m, hi_.y + m, far}, dim_ == 3);
     Real top = 0;
     for (const ParticleRow& r : ctx.fluid->rows(near_wall))
         top = std::max(top, r.x.z + Real(0.5) * dp_ - bed_);

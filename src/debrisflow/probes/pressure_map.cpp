@@ -1,7 +1,7 @@
 #include "debrisflow/probes/pressure_map.hpp"
-#include "debrisflow/probes/fluid_reader.hpp"
 #include "debrisflow/checkpoint/archive.hpp"
 #include "debrisflow/dem/dem_solver.hpp"
+#include "debrisflow/probes/fluid_reader.hpp"
 #include "debrisflow/rigid/body_solver.hpp"
 #include "debrisflow/sph/sph_solver.hpp"
 #include <algorithm>

@@ -65,8 +65,9 @@ public:
 
     // A body added during the run (a rock feed's): its shell's particles appended where the
     // particles are, as the host coupling's add_shell adds them, with their new rows.
-    void add_shell(int b, const rigid::BodyState& state, const std::vector<rigid::ShellPoint>& shell,
-                   Real rho, Real m_particle) override {
+    void add_shell(int b, const rigid::BodyState& state,
+                   const std::vector<rigid::ShellPoint>& shell, Real rho,
+                   Real m_particle) override {
         if (shell.empty()) return;
         std::vector<particles::NewParticle> fresh;
         std::vector<std::int32_t> rows;

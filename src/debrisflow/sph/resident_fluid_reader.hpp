@@ -53,8 +53,8 @@ protected:
         Space::for_each(n, probes::FlagSelected{pv, selection, flag_.data()});
         const Index m = Space::exclusive_scan(n, flag_.data(), at_.data());
         rows_.resize(m);
-        Space::for_each(n, probes::GatherRows{pv, sph_.id_.data(), flag_.data(), at_.data(),
-                                              rows_.data()});
+        Space::for_each(
+            n, probes::GatherRows{pv, sph_.id_.data(), flag_.data(), at_.data(), rows_.data()});
         std::vector<probes::ParticleRow> rows(static_cast<std::size_t>(m));
         if (m > 0) rows_.download(rows.data());
         return rows;

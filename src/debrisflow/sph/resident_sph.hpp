@@ -272,7 +272,8 @@ public:
             id[j] = first + ParticleId(j);
             if (!walls.empty()) {
                 const auto& w = walls[j];
-                real[13][j] = w.n.x, real[14][j] = w.n.y, real[15][j] = w.n.z, real[16][j] = w.depth;
+                real[13][j] = w.n.x, real[14][j] = w.n.y, real[15][j] = w.n.z,
+                real[16][j] = w.depth;
             }
         }
         for (std::size_t f = 0; f < kReal; ++f)
