@@ -4,6 +4,7 @@
 #include "debrisflow/dem/dem_params.hpp"
 #include "debrisflow/dem/fluid_load.hpp"
 #include "debrisflow/dem/grain_contact_k.hpp"
+#include "debrisflow/dem/grain_own_pass_k.hpp"
 #include "debrisflow/dem/grain_set.hpp"
 #include "debrisflow/dem/grain_slot_contact_k.hpp"
 #include "debrisflow/dem/grain_slot_pass_k.hpp"
@@ -115,6 +116,12 @@ public:
     const std::vector<Material>& materials() const { return materials_; }
     const DemParams& params() const { return params_; }
     const Domain& domain() const { return domain_; }
+    // A grain's contact load on a wall that keeps them (a pressure map reads them).
+    struct RecordedLoad {
+        Index grain;
+        std::size_t wall;
+        ContactLoad load;
+    };
 
 private:
     // Below this many grains the loops run on one thread (OpenMP start-up would dominate).
@@ -127,7 +134,24 @@ private:
     // Copies positions, velocities, spins, radii, masses and materials into hot_.
     void refresh_hot();
     void kick_drift(Real h);
+    // One force evaluation (and the closing half kick when half_kick > 0): the host's pass
+    // (own_ranges) or the device's layout (slot_contacts, then own_slots).
     void forces(Real half_kick, bool collect_obstacles = false);
+    // What the per-grain pass reads (GrainOwnPass), as the state stands.
+    GrainOwnInputs own_inputs(Real half_kick);
+    struct ThreadReport {
+        long touching = 0;
+        Real force_sum = 0;
+    };
+    // The host's pass: grain-grain contacts and the per-grain pass on contiguous thread ranges;
+    // adds the walls' and bodies' loads to wall_sum_ and body_sum_ (dem_forces.cpp).
+    ThreadReport own_ranges(Real half_kick, bool measure);
+    // The per-grain pass in the device's layout after slot_contacts filled acc_: reactions kept
+    // per wall and obstacle slot, then summed per wall and per body (dem_slot_pass.cpp).
+    SlotReport own_slots(Real half_kick, bool measure);
+    std::vector<WallState> wall_states_;
+    std::vector<Real> wall_out_, obstacle_out_;
+    std::vector<std::uint8_t> wall_touching_, obstacle_touching_;
     // Candidate grain-obstacle pairs within reach (rebuilt when either side moved).
     void build_obstacle_slots();
     // Each wall's contact material (-1: the grain's own), for the stable step.
@@ -195,11 +219,6 @@ private:
     // What each thread of the per-grain pass sums, kept between steps (no allocation in a
     // step once the sizes are reached): wall and body loads (6 reals each), the contact loads
     // a pressure map reads, touching contacts and the summed |F| for the settling ratio.
-    struct RecordedLoad {
-        Index grain;
-        std::size_t wall;
-        ContactLoad load;
-    };
     struct ThreadSums {
         std::vector<Real> wall, body;
         std::vector<RecordedLoad> loads;

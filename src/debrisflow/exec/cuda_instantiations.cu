@@ -4,6 +4,7 @@
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/coupling/drag_laws_k.hpp"
 #include "debrisflow/dem/grain_kick_drift_k.hpp"
+#include "debrisflow/dem/grain_own_pass_k.hpp"
 #include "debrisflow/dem/grain_slot_contact_k.hpp"
 #include "debrisflow/dem/grain_slot_pass_k.hpp"
 #include "debrisflow/exec/cuda_backend.hpp"
@@ -88,6 +89,11 @@ void instantiate_all() {
     // the grain-grain contacts in the device's layout (dem.contact_pass = "slots")
     launch(0, dem::GrainSlotForces{});
     launch(0, Folded<dem::GrainSlotGather, dem::SlotReport>{});
+    // the per-grain pass in the same layout (walls, bodies, fluid, closing kick) and the
+    // loads it leaves per wall and per body (dem/grain_own_pass_k.hpp)
+    launch(0, Folded<dem::GrainOwnSlots, dem::SlotReport>{});
+    launch(0, Folded<dem::WallSlotLoad, dem::LoadSum>{});
+    launch(0, Folded<dem::BodySlotLoad, dem::LoadSum>{});
     // the SPH phase's per-particle steps (sph/time_schemes_k.hpp) and the grid's sort keys
     launch(0, neighbors::CellKeys{});
     launch(0, sph::TaitPressure{});
