@@ -55,6 +55,47 @@ private:
     std::vector<Vec3> xi_, old_xi_, mroll_, old_mroll_; // mroll_ empty without rolling
 };
 
+// One grain's row of a rebuild, written once for the host and a device: the partners that
+// candidates(i, emit) names (emit(partner, key)), each with the history of the same key in the
+// grain's old row. Returns the number of candidates: a row past the capacity keeps the first
+// ones, and the build retries with room.
+template <class Candidates> struct SlotRowFill {
+    Candidates candidates;
+    const Index* old_count;
+    const std::uint32_t* old_key;
+    const Vec3 *old_xi, *old_mroll; // old_mroll null: the old rows kept no rolling moment
+    Index* count;
+    Index* partner;
+    std::uint32_t* key;
+    Vec3 *xi, *mroll; // mroll null: no rolling moment kept
+    Index cap, old_cap;
+    DF_HD Index operator()(Index i) const {
+        const std::size_t base = std::size_t(i) * std::size_t(cap);
+        const std::size_t old_base = std::size_t(i) * std::size_t(old_cap);
+        const Index old_c = old_count[i];
+        Index c = 0;
+        candidates(i, [&](Index p, std::uint32_t k) {
+            if (c < cap) {
+                const std::size_t to = base + std::size_t(c);
+                partner[to] = p;
+                key[to] = k;
+                xi[to] = Vec3{};
+                if (mroll) mroll[to] = Vec3{};
+                for (Index o = 0; o < old_c; ++o)
+                    if (old_key[old_base + std::size_t(o)] == k) {
+                        const std::size_t from = old_base + std::size_t(o);
+                        xi[to] = old_xi[from];
+                        if (mroll && old_mroll) mroll[to] = old_mroll[from];
+                        break;
+                    }
+            }
+            ++c;
+        });
+        count[i] = c;
+        return c;
+    }
+};
+
 template <class Candidates> void ContactSlots::build(Index n, const Candidates& candidates) {
     const bool had = count_.size() == std::size_t(n);
     const Index old_cap = cap_;
@@ -63,6 +104,7 @@ template <class Candidates> void ContactSlots::build(Index n, const Candidates& 
     old_xi_.swap(xi_);
     old_mroll_.swap(mroll_);
     if (!had) old_count_.assign(std::size_t(n), 0);
+    const bool had_rolling = old_mroll_.size() == old_xi_.size();
     for (;;) {
         const Index cap = cap_;
         count_.assign(std::size_t(n), 0);
@@ -70,33 +112,19 @@ template <class Candidates> void ContactSlots::build(Index n, const Candidates& 
         key_.resize(partner_.size());
         xi_.assign(partner_.size(), Vec3{});
         mroll_.assign(rolling_ ? partner_.size() : 0, Vec3{});
-        const bool had_rolling = old_mroll_.size() == old_xi_.size();
-        const Index worst = exec::max_of(
-            n, Index(0),
-            [&](Index i) {
-                const std::size_t base = std::size_t(i) * std::size_t(cap);
-                const std::size_t old_base = std::size_t(i) * std::size_t(old_cap);
-                const Index old_c = old_count_[std::size_t(i)];
-                Index c = 0;
-                candidates(i, [&](Index partner, std::uint32_t key) {
-                    if (c < cap) {
-                        partner_[base + std::size_t(c)] = partner;
-                        key_[base + std::size_t(c)] = key;
-                        for (Index k = 0; k < old_c; ++k)
-                            if (old_key_[old_base + std::size_t(k)] == key) {
-                                const std::size_t to = base + std::size_t(c),
-                                                  from = old_base + std::size_t(k);
-                                xi_[to] = old_xi_[from];
-                                if (rolling_ && had_rolling) mroll_[to] = old_mroll_[from];
-                                break;
-                            }
-                    }
-                    ++c;
-                });
-                count_[std::size_t(i)] = c;
-                return c;
-            },
-            exec::dynamic(256, 4097));
+        const SlotRowFill<Candidates> fill{candidates,
+                                           old_count_.data(),
+                                           old_key_.data(),
+                                           old_xi_.data(),
+                                           had_rolling ? old_mroll_.data() : nullptr,
+                                           count_.data(),
+                                           partner_.data(),
+                                           key_.data(),
+                                           xi_.data(),
+                                           rolling_ ? mroll_.data() : nullptr,
+                                           cap,
+                                           old_cap};
+        const Index worst = exec::max_of(n, Index(0), fill, exec::dynamic(256, 4097));
         if (worst <= cap) return;
         cap_ = worst + worst / 4 + 2; // history still in old_*: retry with room
     }

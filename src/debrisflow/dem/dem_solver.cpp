@@ -5,6 +5,7 @@
 #include "debrisflow/dem/grain_contact_k.hpp"
 #include "debrisflow/dem/grain_kick_drift_k.hpp"
 #include "debrisflow/dem/rolling_models_k.hpp"
+#include "debrisflow/dem/slot_candidates_k.hpp"
 #include "debrisflow/exec/parallel.hpp"
 #include <algorithm>
 #include <cmath>
@@ -112,41 +113,21 @@ void DemSolver::rebuild() {
     }
     const GrainView g = grains_.view();
     refresh_hot();
-    const neighbors::GridView grid = grid_.view();
     const Real skin = search_margin();
     const std::int32_t* clump_of = clump_of_id_.empty() ? nullptr : clump_of_id_.data();
-    grain_slots_.build(n, [&](Index i, auto&& emit) {
-        const Real ri = g.radius[i];
-        const std::uint32_t idi = g.id[i];
-        const std::int32_t ci = clump_of ? clump_of[idi] : -1;
-        const Real* p = &g.pos[0].x;
-        grid.for_each_neighbor(
-            i, g.pos[i], p, p + 1, p + 2,
-            [&](Index j, Vec3, Real r2) {
-                if (g.id[j] < idi) return;
-                if (ci >= 0 && clump_of[g.id[j]] == ci) return; // members of one clump
-                const Real reach = ri + g.radius[j] + skin;
-                if (r2 < reach * reach) emit(j, g.id[j]);
-            },
-            3);
-    });
+    grain_slots_.build(n, GrainCandidates{grid_.view(), g.pos, g.radius, g.id, clump_of, skin});
     const auto& prims = walls_.primitives();
     const auto& wl = walls_.walls();
-    // Active primitives with their boxes: most grains are far from most faces of a flume's
-    // structures, and the box test rejects them before the closest-point search.
-    std::vector<std::pair<std::size_t, PrimitiveBounds>> active;
+    // Active primitives with their boxes.
+    active_prims_.clear();
+    active_bounds_.clear();
     for (std::size_t k = 0; k < prims.size(); ++k)
-        if (wl[std::size_t(prims[k].wall)].active)
-            active.emplace_back(k, PrimitiveBounds::of(prims[k]));
-    wall_slots_.build(n, [&](Index i, auto&& emit) {
-        const Vec3 p = g.pos[i];
-        const Real reach = g.radius[i] + skin;
-        for (const auto& [k, box] : active) {
-            if (!box.may_reach(p, reach)) continue;
-            const Vec3 q = closest_point(prims[k], p);
-            if (wall_distance(prims[k], p, q) < reach) emit(Index(k), std::uint32_t(k));
+        if (wl[std::size_t(prims[k].wall)].active) {
+            active_prims_.push_back(Index(k));
+            active_bounds_.push_back(PrimitiveBounds::of(prims[k]));
         }
-    });
+    wall_slots_.build(n, WallCandidatesOf{prims.data(), active_prims_.data(), active_bounds_.data(),
+                                          Index(active_prims_.size()), g.pos, g.radius, skin});
 }
 
 void DemSolver::configure_grid() {

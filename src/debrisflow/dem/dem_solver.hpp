@@ -130,6 +130,9 @@ private:
     // inside the 2 / w stability bound of velocity Verlet with room for several contacts).
     static constexpr Real stability_fraction = 0.2;
     void rebuild();
+    // The active wall primitives and their boxes at the last rebuild (WallCandidatesOf).
+    std::vector<Index> active_prims_;
+    std::vector<PrimitiveBounds> active_bounds_;
     void configure_grid();
     // Copies positions, velocities, spins, radii, masses and materials into hot_.
     void refresh_hot();

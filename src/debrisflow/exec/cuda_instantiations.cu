@@ -3,10 +3,12 @@
 // device (exec.backend = "cuda"). No GPU is needed to compile this file.
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/coupling/drag_laws_k.hpp"
+#include "debrisflow/dem/contact_slots.hpp"
 #include "debrisflow/dem/grain_kick_drift_k.hpp"
 #include "debrisflow/dem/grain_own_pass_k.hpp"
 #include "debrisflow/dem/grain_slot_contact_k.hpp"
 #include "debrisflow/dem/grain_slot_pass_k.hpp"
+#include "debrisflow/dem/slot_candidates_k.hpp"
 #include "debrisflow/exec/cuda_backend.hpp"
 #include "debrisflow/exec/cuda_space.cuh"
 #include "debrisflow/kernels/cubic_spline_k.hpp"
@@ -94,6 +96,9 @@ void instantiate_all() {
     launch(0, Folded<dem::GrainOwnSlots, dem::SlotReport>{});
     launch(0, Folded<dem::WallSlotLoad, dem::LoadSum>{});
     launch(0, Folded<dem::BodySlotLoad, dem::LoadSum>{});
+    // a neighbour rebuild's rows: grain and wall candidates with their carried history
+    launch_evaluate<dem::SlotRowFill<dem::GrainCandidates>>();
+    launch_evaluate<dem::SlotRowFill<dem::WallCandidatesOf>>();
     // the SPH phase's per-particle steps (sph/time_schemes_k.hpp) and the grid's sort keys
     launch(0, neighbors::CellKeys{});
     launch(0, sph::TaitPressure{});

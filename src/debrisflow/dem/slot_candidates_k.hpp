@@ -1,0 +1,63 @@
+#pragma once
+// Who may touch whom before the next neighbour rebuild, grain by grain, written once for the
+// host (DemSolver::rebuild through ContactSlots::build) and a device: candidates(i, emit) calls
+// emit(partner, key) for each partner of grain i within reach (radii + skin).
+#include "debrisflow/dem/wall_geometry_k.hpp"
+#include "debrisflow/neighbors/grid_view_k.hpp"
+#include <cstdint>
+#include <type_traits>
+
+namespace debrisflow::dem {
+
+// Grain-grain candidates from the cell grid, each pair once (the partner's id not below the
+// grain's), members of one clump never paired; the key is the partner's persistent id.
+struct GrainCandidates {
+    neighbors::GridView grid;
+    const Vec3* pos;
+    const Real* radius;
+    const std::uint32_t* id;
+    const std::int32_t* clump_of; // clump of each grain id (< 0: none), or null
+    Real skin;
+    template <class Emit> DF_HD void operator()(Index i, Emit&& emit) const {
+        const Real ri = radius[i];
+        const std::uint32_t idi = id[i];
+        const std::int32_t ci = clump_of ? clump_of[idi] : -1;
+        const Real* p = &pos[0].x;
+        grid.for_each_neighbor(
+            i, pos[i], p, p + 1, p + 2,
+            [&](Index j, Vec3, Real r2) {
+                if (id[j] < idi) return;
+                if (ci >= 0 && clump_of[id[j]] == ci) return; // members of one clump
+                const Real reach = ri + radius[j] + skin;
+                if (r2 < reach * reach) emit(j, id[j]);
+            },
+            3);
+    }
+};
+static_assert(std::is_trivially_copyable_v<GrainCandidates>);
+
+// Grain-wall candidates among the active primitives (`active`: their indices, `bounds`: their
+// boxes, which reject most faces of a flume's structures before the closest-point search); the
+// key is the primitive's index.
+struct WallCandidatesOf {
+    const WallPrimitive* prims;
+    const Index* active;
+    const PrimitiveBounds* bounds;
+    Index count;
+    const Vec3* pos;
+    const Real* radius;
+    Real skin;
+    template <class Emit> DF_HD void operator()(Index i, Emit&& emit) const {
+        const Vec3 p = pos[i];
+        const Real reach = radius[i] + skin;
+        for (Index a = 0; a < count; ++a) {
+            if (!bounds[a].may_reach(p, reach)) continue;
+            const WallPrimitive& w = prims[active[a]];
+            const Vec3 q = closest_point(w, p);
+            if (wall_distance(w, p, q) < reach) emit(active[a], std::uint32_t(active[a]));
+        }
+    }
+};
+static_assert(std::is_trivially_copyable_v<WallCandidatesOf>);
+
+} // namespace debrisflow::dem
