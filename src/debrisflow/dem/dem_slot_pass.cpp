@@ -94,7 +94,10 @@ SlotReport DemSolver::own_slots(Real half_kick, bool measure) {
     // On the host, in grain and slot order: the contact loads a pressure map reads and the
     // nodal triangles' share of the impulse (a device would scatter these with atomics).
     Vec3* node_j = half_kick > 0 ? walls_.nodes().impulse.data() : nullptr;
-    for (Index i = 0; i < n && in.wall_capacity > 0; ++i) {
+    bool record = false;
+    for (const auto& w : wl) record = record || w.record_contacts;
+    const bool nodal = node_j && !walls_.corners().empty();
+    for (Index i = 0; i < n && in.wall_capacity > 0 && (record || nodal); ++i) {
         const std::size_t base = std::size_t(i) * std::size_t(in.wall_capacity);
         for (Index k = 0; k < in.wall_count[i]; ++k) {
             const std::size_t s = base + std::size_t(k);

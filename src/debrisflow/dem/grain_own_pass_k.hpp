@@ -69,6 +69,13 @@ struct GrainOwnPass {
     // force), contact(force on the grain), begin(i, wall slots, obstacle slots).
     template <class Sink>
     DF_HD DF_HOT_INLINE void operator()(Index i, WallCandidates& cand, Sink& sink) const {
+        run(i, &cand, sink);
+    }
+
+    // The same with the candidates' scratch space only where the grain has wall slots (null
+    // otherwise): the device's layout makes it per grain, and only where it is needed.
+    template <class Sink>
+    DF_HD DF_HOT_INLINE void run(Index i, WallCandidates* scratch, Sink& sink) const {
         const GrainView& g = in.g;
         const PairTable& tab = in.table;
         // a clump member's force is its contacts'; gravity acts on the clump
@@ -89,6 +96,7 @@ struct GrainOwnPass {
             return HistoryRef{in.wall_xi + slot, in.wall_roll ? in.wall_roll + slot : nullptr};
         };
         if (cw > 0) {
+            WallCandidates& cand = *scratch;
             const GrainState si = in.hot[i];
             // a local, not the member: covered() takes the list by reference, and the member's
             // address passed to it would make the compiler reload every member after a store
@@ -232,7 +240,6 @@ struct GrainOwnSlots {
     std::uint8_t* obstacle_touching;
     bool measure;
     DF_HD void operator()(Index i, SlotReport& report) const {
-        WallCandidates cand;
         GrainOwnSlotSink sink{wall_out,
                               wall_touching,
                               obstacle_out,
@@ -241,7 +248,12 @@ struct GrainOwnSlots {
                               pass.in.obstacle_capacity,
                               measure,
                               report};
-        pass(i, cand, sink);
+        if (pass.in.wall_count[i] > 0) {
+            WallCandidates cand; // zeroes its points: made only for a grain with wall slots
+            pass.run(i, &cand, sink);
+        } else {
+            pass.run(i, nullptr, sink);
+        }
     }
 };
 static_assert(std::is_trivially_copyable_v<GrainOwnSlots>);
