@@ -94,16 +94,16 @@ SlotReport DemSolver::own_slots(Real half_kick, bool measure) {
     // On the host, in grain and slot order: the contact loads a pressure map reads and the
     // nodal triangles' share of the impulse (a device would scatter these with atomics).
     Vec3* node_j = half_kick > 0 ? walls_.nodes().impulse.data() : nullptr;
-    bool record = false;
-    for (const auto& w : wl) record = record || w.record_contacts;
+    bool any_record = false;
+    for (std::size_t w = 0; w < wl.size(); ++w) any_record = any_record || in.walls[w].record;
     const bool nodal = node_j && !walls_.corners().empty();
-    for (Index i = 0; i < n && in.wall_capacity > 0 && (record || nodal); ++i) {
+    for (Index i = 0; i < n && in.wall_capacity > 0 && (any_record || nodal); ++i) {
         const std::size_t base = std::size_t(i) * std::size_t(in.wall_capacity);
         for (Index k = 0; k < in.wall_count[i]; ++k) {
             const std::size_t s = base + std::size_t(k);
             if (!wall_touching_[s]) continue;
             const WallPrimitive& pr = in.prims[in.wall_partner[s]];
-            const bool record = wl[std::size_t(pr.wall)].record_contacts;
+            const bool record = in.walls[pr.wall].record;
             if (!record && !(node_j && pr.corners >= 0)) continue;
             const Real* o = wall_out_.data() + 9 * s;
             const Vec3 f{o[0], o[1], o[2]}, q{o[3], o[4], o[5]};
