@@ -30,8 +30,9 @@ struct State {
 };
 
 State run(const std::string& file, std::vector<std::string> sets, const std::string& pass,
-          Real until) {
+          Real until, const std::string& backend = "host") {
     sets.push_back(fmt::format("dem.contact_pass=\"{}\"", pass));
+    sets.push_back(fmt::format("exec.backend=\"{}\"", backend));
     // a case of the repository, or one a test wrote (an absolute path)
     const std::string path =
         file.front() == '/' ? file : std::string(DEBRISFLOW_SOURCE_DIR) + "/" + file;
@@ -119,6 +120,38 @@ void check(const std::string& file, const std::vector<std::string>& sets, Real u
     EXPECT_LE(x.f, bound.f);
     EXPECT_LE(x.spring, bound.spring);
     EXPECT_LE(x.probe, bound.probe);
+}
+
+// The resident DEM loop (exec.backend = "host_resident": grains and slots in the backend's
+// memory, every step through exec/'s primitives, dem/resident_dem.hpp) against the host's loop
+// in the same contact layout ("slots"): the same functors in the same order per grain, so
+// grains, springs and contacts agree bitwise; a wall's load is a sum over grains whose
+// partial sums the two loops split differently, so probes of wall loads agree to round-off.
+void check_resident(const std::string& file, const std::vector<std::string>& sets, Real until,
+                    double d, std::size_t* grains_at_end = nullptr) {
+    const State host = run(file, sets, "slots", until);
+    const State resident = run(file, sets, "slots", until, "host_resident");
+    if (grains_at_end) *grains_at_end = resident.grains.size();
+    ASSERT_EQ(host.steps, resident.steps);
+    ASSERT_EQ(host.grains.size(), resident.grains.size());
+    ASSERT_GT(host.contacts, 0);
+    EXPECT_EQ(host.contacts, resident.contacts);
+    ASSERT_EQ(host.probes.size(), resident.probes.size());
+    for (std::size_t k = 0; k < host.probes.size(); ++k)
+        ASSERT_EQ(host.probes[k].size(), resident.probes[k].size());
+    ASSERT_EQ(host.springs.size(), resident.springs.size());
+    const Diff x = compare(host, resident, d);
+    std::cout << fmt::format("{} (resident): {} steps, {} grains, {} contacts; largest "
+                             "differences: position {:.2e} d, velocity {:.2e}, spin {:.2e}, force "
+                             "{:.2e}, spring {:.2e}, probes {:.2e}\n",
+                             file, host.steps, host.grains.size(), host.contacts, x.x, x.v, x.w,
+                             x.f, x.spring, x.probe);
+    EXPECT_EQ(x.x, 0);
+    EXPECT_EQ(x.v, 0);
+    EXPECT_EQ(x.w, 0);
+    EXPECT_EQ(x.f, 0);
+    EXPECT_EQ(x.spring, 0);
+    EXPECT_LE(x.probe, 1e-12); // wall loads: partial sums in another order
 }
 
 } // namespace
@@ -216,4 +249,85 @@ type = "fem_force"
 every = 2e-4
 )");
     check(file, {}, 0.02, 0.01, round_off);
+}
+
+// The resident loop on the cases issue #34 names: box100k (short), the reduced flume (walls,
+// reordering, neighbour rebuilds with carried springs) and the type-A slit dam (Hertz-Mindlin).
+TEST(DemResident, Box100k) {
+    check_resident("cases/bench/box100k.toml", {"time.end=2e-5"}, 2e-5, 0.01);
+}
+TEST(DemResident, ReducedFlume) {
+    check_resident("cases/flume/flume30_reduced.toml", {"time.end=0.05"}, 0.05, 0.01);
+}
+TEST(DemResident, SlitDamTypeA) {
+    check_resident("cases/papers/slit_dam_dem/typeA.toml", {"dem.settle=false", "time.end=0.07"},
+                   0.07, 0.01);
+}
+// Discs with the elastic-plastic rolling model (a rolling moment carried in each slot), settled
+// on the host before the loop takes them over, then released by a gate removed at t = 0.
+TEST(DemResident, ColumnCollapseWithRollingMemory) {
+    check_resident("cases/deposits/column_collapse2d.toml", {"time.end=0.3", "output.vtk=false"},
+                   0.3, 0.005);
+}
+// A moving wall (its faces uploaded after every move) pushes discs along a floor and out of
+// the domain: grains that leave are removed on the host (the loop publishes, the host removes
+// and rebuilds, the loop takes the state over again), with the constant-torque rolling model.
+TEST(DemResident, PushedOffTheDomainByAMovingWall) {
+    const std::string file = test::write_temp_case("pushed_off", R"(
+name = "pushed_off"
+dimensions = 2
+[time]
+end = 0.25
+[output]
+vtk = false
+[domain]
+min = [-0.02, 0, -0.02]
+max = [0.2, 0, 0.2]
+[dem]
+thickness = 0.005
+safety = 0.1
+rolling = "constant_torque"
+[[material]]
+name = "glass"
+density = 2500
+kn = 1e5
+restitution = 0.5
+friction = 0.5
+rolling_friction = 0.1
+[[wall]]
+name = "floor"
+shape = "plane"
+material = "glass"
+point = [0, 0, 0]
+normal = [0, 0, 1]
+[[wall]]
+name = "pusher"
+shape = "plane"
+material = "glass"
+point = [0, 0, 0]
+normal = [1, 0, 0]
+velocity = [0.6, 0, 0]
+[[grains]]
+name = "heap"
+material = "glass"
+packing = "lattice"
+diameter = 0.01
+gap = 0.05
+region = { shape = "box", min = [0.005, 0, 0], max = [0.15, 0, 0.04] }
+[[probe]]
+name = "push"
+type = "wall_force"
+wall = "pusher"
+every = 0.005
+[[probe]]
+name = "energy"
+type = "kinetic_energy"
+min = [-0.02, 0, -0.02]
+max = [0.2, 0, 0.2]
+every = 0.005
+)");
+    std::size_t at_start = 0, at_end = 0;
+    check_resident(file, {"time.end=1e-6"}, 1e-6, 0.01, &at_start);
+    check_resident(file, {}, 0.25, 0.01, &at_end);
+    EXPECT_LT(at_end, at_start); // some left, and were removed
 }

@@ -82,6 +82,9 @@ Simulation::Simulation(io::CaseSpec spec)
                                          "({}); use dem.dt <= {:.4g} s",
                                          spec_.dem_origin.at("dt"), p.dt, stable.dt, stable.limiter,
                                          stable.dt));
+        if (spec_.backend != "host")
+            resident_dem_ =
+                dem::make_resident_dem(spec_.backend, *dem_, spec_.exec_origin.at("backend"));
     }
     wall_removed_.assign(spec_.walls.size(), 0);
     for (const auto& in : spec_.inlets) {
@@ -194,8 +197,10 @@ RunReport Simulation::run(const RunOptions& opt) {
     time::Integrator integ;
     // in the order coupling/step_order.cpp states
     time::Phase* sph_phase = resident_ ? static_cast<time::Phase*>(resident_.get()) : solver_.get();
+    time::Phase* dem_phase =
+        resident_dem_ ? static_cast<time::Phase*>(resident_dem_.get()) : dem_.get();
     for (time::Phase* p :
-         coupling::force_order({sph_phase, dem_.get(), sph_dem_.get(), rigid_.get(), fem_.get()}))
+         coupling::force_order({sph_phase, dem_phase, sph_dem_.get(), rigid_.get(), fem_.get()}))
         integ.add_phase(p);
     integ.set_reorder_every(solver_ ? spec_.sph.reorder_every : 1);
     // Cases without fluid take one force evaluation per step (velocity Verlet in the DEM and
@@ -254,6 +259,14 @@ RunReport Simulation::run(const RunOptions& opt) {
                     // where they are (sph/resident_bodies.hpp)
                     out->tally_fluid(resident_->remove_fluid_inside(out->box()).mass);
                     out->apply(nullptr, nullptr, rigid_.get());
+                } else if (resident_dem_) {
+                    // grains inside are looked for where they are; the rare removal runs on
+                    // the host between a publish and a reload
+                    if (resident_dem_->any_inside(out->box())) {
+                        resident_dem_->publish();
+                        out->apply(nullptr, dem_.get(), nullptr);
+                        resident_dem_->reload();
+                    }
                 } else
                     out->apply(solver_.get(), dem_.get(), rigid_.get());
                 if (out->bodies_removed() > before)
@@ -279,6 +292,15 @@ RunReport Simulation::run(const RunOptions& opt) {
                 if (!note.empty()) log_.line(note);
                 return;
             }
+            if (resident_dem_) {
+                // grains that left are rare: removed on the host, then taken over again
+                if (!dem_->may_have_left()) return;
+                resident_dem_->publish();
+                const std::string note = domain_exit_.apply(nullptr, dem_.get(), s.t);
+                resident_dem_->reload();
+                if (!note.empty()) log_.line(note);
+                return;
+            }
             const std::string note = domain_exit_.apply(solver_.get(), dem_.get(), s.t);
             if (!note.empty()) log_.line(note);
         });
@@ -287,7 +309,7 @@ RunReport Simulation::run(const RunOptions& opt) {
         integ.add_observer(
             time::Schedule::every_time(p->every()),
             [this, raw](const time::StepInfo& s) { raw->record(s.t, probe_context()); },
-            raw->reads_particles());
+            raw->reads_particles() || (resident_dem_ && raw->reads_grains()));
     }
     const auto frames = spec_.vtk_every > 0 ? time::Schedule::every_time(spec_.vtk_every)
                                             : time::Schedule::every_steps(0);
@@ -382,6 +404,11 @@ RunReport Simulation::run(const RunOptions& opt) {
         if (dem_) {
             report.dem_contacts = dem_->contacts();
             report.dem_list_builds = dem_->list_builds();
+        }
+        if (resident_dem_) {
+            report.dem_bytes = resident_dem_->memory_bytes();
+            report.dem_copies_to_host = resident_dem_->copies_to_host();
+            report.dem_copies_from_host = resident_dem_->copies_from_host();
         }
     };
     try {

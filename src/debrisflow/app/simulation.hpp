@@ -8,6 +8,7 @@
 #include "debrisflow/coupling/sph_fem.hpp"
 #include "debrisflow/coupling/step_order.hpp"
 #include "debrisflow/dem/dem_solver.hpp"
+#include "debrisflow/dem/resident_dem_backend.hpp"
 #include "debrisflow/fem/fem_solver.hpp"
 #include "debrisflow/flow/domain_exit.hpp"
 #include "debrisflow/flow/fluid_inlet.hpp"
@@ -112,6 +113,9 @@ private:
     dem::GrainSet grains_;
     dem::WallSet dem_walls_;
     std::unique_ptr<dem::DemSolver> dem_;
+    // The DEM phase's time loop on a resident backend (exec.backend other than "host"); the
+    // solver above then keeps the parameters, walls, step and counters.
+    std::unique_ptr<dem::ResidentDemPhase> resident_dem_;
     std::unique_ptr<rigid::BodySolver> rigid_;
     std::unique_ptr<fem::FemSolver> fem_;
     std::unique_ptr<coupling::SphFemCoupling> sph_fem_;   // with a fluid

@@ -95,7 +95,8 @@ std::string Simulation::write_checkpoint(const std::string& out_dir, long step, 
 void Simulation::restore(const std::string& file) {
     auto ar = checkpoint::Archive::loading(checkpoint::read_file(file), file);
     state(ar);
-    if (resident_) resident_->reload(); // the restored particles replace the resident ones
+    if (resident_) resident_->reload();         // the restored particles replace the resident ones
+    if (resident_dem_) resident_dem_->reload(); // and the restored grains the resident ones
     resume_.active = true;
     resume_.file = file;
 }

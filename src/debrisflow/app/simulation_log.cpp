@@ -67,7 +67,10 @@ void Simulation::log_case(const RunReport& report) {
                         spec_.sph.diffusion, sph::wall_words(spec_.sph),
                         resident_ ? "gathered over cells" : sph::pair_loop_words(spec_.sph),
                         report.initial_dt.dt, report.initial_dt.limiter));
-    if (solver_) log_.line("backend: " + sph::backend_words(spec_.backend, spec_.has_bodies()));
+    if (solver_)
+        log_.line("backend: " + sph::backend_words(spec_.backend, spec_.has_bodies()));
+    else if (dem_)
+        log_.line("backend: " + dem::backend_words(spec_.backend));
     if (dem_)
         log_.line(fmt::format("dem: {} grains{}, {:.4g} kg, {} walls; dt = {:.3g} s ({}; automatic "
                               "{:.3g} s){}",

@@ -72,6 +72,13 @@ void write_summary(const std::string& path, const io::CaseSpec& spec, const RunR
                          "\"neighbor_rebuilds\": {}}},\n",
                          num(r.dem_dt.dt), quoted(r.dem_dt.limiter), r.dem_contacts,
                          r.dem_list_builds);
+    if (r.dem_bytes > 0)
+        o << fmt::format("  \"dem_memory\": {{\"backend\": {}, \"bytes\": {}, "
+                         "\"bytes_per_grain\": {}, \"copies_to_host\": {}, "
+                         "\"copies_from_host\": {}}},\n",
+                         quoted(spec.backend), r.dem_bytes,
+                         num(r.grains_end > 0 ? double(r.dem_bytes) / double(r.grains_end) : 0),
+                         r.dem_copies_to_host, r.dem_copies_from_host);
     if (r.bodies > 0)
         o << fmt::format("  \"rigid\": {{\"bodies\": {}, \"contacts\": {}}},\n", r.bodies,
                          r.body_contacts);

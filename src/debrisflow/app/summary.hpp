@@ -27,6 +27,9 @@ struct RunReport {
     std::size_t sph_bytes = 0;    // memory the SPH phase holds at the end (SphSolver::memory_bytes)
     long sph_particles = 0;       // fluid and boundary particles at the end
     long sph_copies_to_host = -1; // a resident backend's copies of the particles to the host
+    // A resident DEM phase: bytes in its memory, copies of the grains to and from the host.
+    std::size_t dem_bytes = 0;
+    long dem_copies_to_host = -1, dem_copies_from_host = -1;
     // FEM solids: nodes, elements, eroded elements, critical step and FEM steps taken.
     long fem_nodes = 0, fem_elements = 0, fem_eroded = 0, fem_substeps = 0;
     double fem_dt = 0;

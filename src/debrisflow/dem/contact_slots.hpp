@@ -48,6 +48,8 @@ public:
     void state(checkpoint::Archive& ar);
 
 private:
+    // The resident loop (dem/resident_dem.hpp) copies the rows to and from its memory.
+    template <class> friend class ResidentDem;
     Index cap_ = 8;
     std::vector<Index> count_, partner_, old_count_;
     std::vector<std::uint32_t> key_, old_key_;

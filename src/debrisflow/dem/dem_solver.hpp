@@ -124,6 +124,9 @@ public:
     };
 
 private:
+    // The resident loop (dem/resident_dem.hpp) steps this solver's state in its own memory:
+    // it keeps the parameters, walls, step and counters here and copies grains and slots.
+    template <class> friend class ResidentDem;
     // Below this many grains the loops run on one thread (OpenMP start-up would dominate).
     static constexpr Index parallel_min = 4096;
     // Largest step accepted from the user: a fifth of the shortest contact time (about 0.6 / w,

@@ -3,7 +3,8 @@
 
 namespace debrisflow::cuda {
 
-// Makes exec.backend = "cuda" (--backend cuda) create the resident SPH loop on the device.
+// Makes exec.backend = "cuda" (--backend cuda) create the resident SPH and DEM loops on the
+// device.
 void register_backend();
 
 } // namespace debrisflow::cuda

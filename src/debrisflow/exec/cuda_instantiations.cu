@@ -1,6 +1,6 @@
 // Compiles the host/device SPH and DEM functors with nvcc and launches them from a CUDA
-// kernel, so that every per-pair rule stays device-callable, and the resident SPH loop on the
-// device (exec.backend = "cuda"). No GPU is needed to compile this file.
+// kernel, so that every per-pair rule stays device-callable, and the resident SPH and DEM loops
+// on the device (exec.backend = "cuda"). No GPU is needed to compile this file.
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/coupling/drag_laws_k.hpp"
 #include "debrisflow/dem/contact_slots.hpp"
@@ -8,6 +8,7 @@
 #include "debrisflow/dem/grain_own_pass_k.hpp"
 #include "debrisflow/dem/grain_slot_contact_k.hpp"
 #include "debrisflow/dem/grain_slot_pass_k.hpp"
+#include "debrisflow/dem/resident_dem.hpp"
 #include "debrisflow/dem/slot_candidates_k.hpp"
 #include "debrisflow/exec/cuda_backend.hpp"
 #include "debrisflow/exec/cuda_space.cuh"
@@ -119,22 +120,35 @@ void instantiate_all() {
     instantiate_kernel<kernels::CubicSpline>();
 }
 
+// Throws InputError (naming `where`) when this machine has no CUDA device.
+void require_device(const std::string& where) {
+    int count = 0;
+    const cudaError_t e = cudaGetDeviceCount(&count);
+    if (e != cudaSuccess || count == 0)
+        throw InputError(where +
+                         ": exec.backend = \"cuda\" needs a CUDA device; this "
+                         "machine has none (" +
+                         std::string(e != cudaSuccess ? cudaGetErrorString(e) : "0 devices") +
+                         "); use \"host\" or \"host_resident\"");
+}
+
 void register_backend() {
-    sph::set_cuda_factory([](sph::SphSolver& host,
-                             const std::string& where) -> std::unique_ptr<sph::ResidentPhase> {
-        int count = 0;
-        const cudaError_t e = cudaGetDeviceCount(&count);
-        if (e != cudaSuccess || count == 0)
-            throw InputError(where +
-                             ": exec.backend = \"cuda\" needs a CUDA device; this "
-                             "machine has none (" +
-                             std::string(e != cudaSuccess ? cudaGetErrorString(e) : "0 devices") +
-                             "); use \"host\" or \"host_resident\"");
-        return std::make_unique<sph::ResidentSph<exec::CudaSpace>>(host);
-    });
+    sph::set_cuda_factory(
+        [](sph::SphSolver& host, const std::string& where) -> std::unique_ptr<sph::ResidentPhase> {
+            require_device(where);
+            return std::make_unique<sph::ResidentSph<exec::CudaSpace>>(host);
+        });
+    dem::set_cuda_dem_factory(
+        [](dem::DemSolver& host,
+           const std::string& where) -> std::unique_ptr<dem::ResidentDemPhase> {
+            require_device(where);
+            return std::make_unique<dem::ResidentDem<exec::CudaSpace>>(host);
+        });
 }
 
 } // namespace debrisflow::cuda
 
-// The SPH phase's time loop resident on the device (sph/resident_sph.hpp).
+// The SPH and DEM phases' time loops resident on the device (sph/resident_sph.hpp,
+// dem/resident_dem.hpp).
 template class debrisflow::sph::ResidentSph<debrisflow::exec::CudaSpace>;
+template class debrisflow::dem::ResidentDem<debrisflow::exec::CudaSpace>;

@@ -53,6 +53,25 @@ struct Plus {
     template <class T> __device__ T operator()(T a, T b) const { return a + b; }
 };
 
+// out[i] = T{} with item i folded in (f(i, T&)): what a fold reduces.
+template <class F, class T> struct FoldInto {
+    F f;
+    T* out;
+    __device__ void operator()(Index i) const {
+        T t{};
+        f(i, t);
+        out[i] = t;
+    }
+};
+
+// T::combine as a binary operator for CUB.
+template <class T> struct Combine {
+    __device__ T operator()(T a, const T& b) const {
+        T::combine(a, b);
+        return a;
+    }
+};
+
 struct Iota {
     Index* out;
     __device__ void operator()(Index i) const { out[i] = i; }
@@ -183,6 +202,26 @@ struct CudaSpace {
         cuda_check(cub::DeviceSegmentedReduce::Reduce(s.temp.data(), bytes, in, out, segments,
                                                       start, start + 1, cuda_detail::Plus{}, T{}),
                    "cub::DeviceSegmentedReduce::Reduce");
+    }
+
+    // The fold of f over [0, n): f(i, T&) adds item i into a T; the items' Ts are combined
+    // with T::combine from T{} by CUB's reduction (its order of combination is CUB's).
+    template <class T, class F> static T fold(Index n, const F& f) {
+        if (n <= 0) return T{};
+        static Buffer<T> values, out; // one pair per folded type, kept between calls
+        auto& s = scratch();
+        values.resize(n);
+        out.resize(1);
+        for_each(n, cuda_detail::FoldInto<F, T>{f, values.data()});
+        std::size_t bytes = 0;
+        cuda_check(cub::DeviceReduce::Reduce(nullptr, bytes, values.data(), out.data(), n,
+                                             cuda_detail::Combine<T>{}, T{}),
+                   "cub::DeviceReduce::Reduce (size)");
+        s.temp.resize(Index(bytes));
+        cuda_check(cub::DeviceReduce::Reduce(s.temp.data(), bytes, values.data(), out.data(), n,
+                                             cuda_detail::Combine<T>{}, T{}),
+                   "cub::DeviceReduce::Reduce");
+        return out.at(0);
     }
 
     // The smallest i with bad(i), or n when there is none.

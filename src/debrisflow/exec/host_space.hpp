@@ -72,6 +72,13 @@ struct HostSpace {
         });
     }
 
+    // The fold of f over [0, n): f(i, T&) adds item i into a T; the partial Ts are combined
+    // with T::combine, from T{} (a T's default value is the fold's identity). Partial sums are
+    // combined in thread order (a run repeats bitwise for a thread count).
+    template <class T, class F> static T fold(Index n, const F& f) {
+        return exec::reduce(n, T{}, f, [](T& a, const T& b) { T::combine(a, b); });
+    }
+
     // The smallest i with bad(i), or n when there is none.
     template <class F> static Index first_where(Index n, const F& bad) {
         return exec::reduce(

@@ -192,24 +192,36 @@ CaseSpec read_case(const std::string& path, const std::vector<std::string>& over
 
 namespace {
 
-// What the resident backends (exec.backend = "host_resident" or "cuda") run so far: fluid and
-// walls (fixed, moving, removed by remove_at), inlets and outlets, domain exit, rigid bodies
-// (their 6-DOF update on the host; rock feeds add them and outlets remove them with their
-// particles), DBC and mDBC (with either no-slip),
-// every kernel, viscosity and diffusion model, both time schemes. Anything else is rejected here,
-// so that `check` rejects it too.
+// What the resident backends (exec.backend = "host_resident" or "cuda") run so far. The SPH
+// phase: fluid and walls (fixed, moving, removed by remove_at), inlets and outlets, domain exit,
+// rigid bodies (their 6-DOF update on the host; rock feeds add them and outlets remove them
+// with their particles), DBC and mDBC (with either no-slip), every kernel, viscosity and
+// diffusion model, both time schemes. The DEM phase (dem/resident_dem.hpp): spherical grains
+// (discs in 2D) with every contact law and rolling model, walls of planes, boxes and triangle
+// meshes (fixed, moving, removed by remove_at), settling (on the host, before the loop), the
+// domain exit and outlets (grains that leave are removed on the host), every grain probe but the
+// pressure map. Anything else is rejected here, so that `check` rejects it too.
 void require_backend_supports(const CaseSpec& c) {
     if (c.backend == "host") return;
     const auto no = [&](bool present, const std::string& what) {
         if (present)
-            throw InputError(fmt::format("{}: exec.backend = \"{}\" runs fluid, walls, inlets, "
-                                         "outlets and rigid bodies only so far; this case has {} "
-                                         "(use exec.backend = \"host\")",
-                                         c.exec_origin.at("backend"), c.backend, what));
+            throw InputError(fmt::format(
+                "{}: exec.backend = \"{}\" runs either fluid (with walls, inlets, outlets and "
+                "rigid bodies) or spherical grains (with walls, gates, outlets and the domain "
+                "exit) so "
+                "far; this case has {} (use exec.backend = \"host\")",
+                c.exec_origin.at("backend"), c.backend, what));
     };
-    no(c.fluids.empty(), "no fluid");
-    no(c.has_dem, "grains ([dem])");
+    no(c.fluids.empty() && !c.has_dem, "neither fluid nor grains");
     no(c.has_fem(), "FEM solids");
+    if (!c.has_dem) return;
+    no(!c.fluids.empty(), "both fluid and grains");
+    no(c.has_bodies(), "grains and rigid bodies");
+    no(!c.dem.feeds.empty(), "a grain feed");
+    for (const auto& g : c.dem.grains)
+        no(!g.clump_centers.empty(), "clumps (" + g.origin.block() + ")");
+    for (const auto& p : c.probes)
+        no(p.type == "pressure_map", "a pressure map (" + p.origin.block() + ")");
 }
 
 } // namespace

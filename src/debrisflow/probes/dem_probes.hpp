@@ -24,6 +24,7 @@ public:
     }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
     bool reads_particles() const override { return false; } // the grains (and bodies)
+    bool reads_grains() const override { return true; }
 
 private:
     Vec3 lo_, hi_;
@@ -43,6 +44,7 @@ public:
     }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
     bool reads_particles() const override { return false; } // the grains (and bodies)
+    bool reads_grains() const override { return true; }
 
 private:
     Vec3 lo_, hi_;
@@ -59,6 +61,7 @@ public:
     std::vector<std::string> columns() const override { return {"runup [m]"}; }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
     bool reads_particles() const override { return false; } // the grains (and bodies)
+    bool reads_grains() const override { return true; }
 
 private:
     int wall_;
@@ -78,6 +81,7 @@ public:
     std::vector<std::string> columns() const override { return {"flux [kg/s]", "cumulative [kg]"}; }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
     bool reads_particles() const override { return false; } // the grains (and bodies)
+    bool reads_grains() const override { return true; }
     void extra_state(checkpoint::Archive& ar) override;
 
 private:

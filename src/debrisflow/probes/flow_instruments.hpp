@@ -40,6 +40,7 @@ public:
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
     void extra_state(checkpoint::Archive& ar) override;
     bool reads_particles() const override { return false; } // rows near the plane, ctx.fluid
+    bool reads_grains() const override { return true; }
 
 private:
     Vec3 point_, n_;
@@ -66,6 +67,7 @@ public:
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
     void extra_state(checkpoint::Archive& ar) override;
     bool reads_particles() const override { return false; } // grains and bodies
+    bool reads_grains() const override { return true; }
 
 private:
     SolidCrossing up_, down_;
@@ -87,6 +89,7 @@ public:
     }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
     bool reads_particles() const override { return false; } // rows, ctx.fluid
+    bool reads_grains() const override { return true; }
 
 private:
     Vec3 lo_, hi_;

@@ -64,6 +64,9 @@ public:
     // resident backend first); false for probes that read only a FluidReader, the bodies,
     // the grains or their own tallies.
     virtual bool reads_particles() const { return true; }
+    // Whether a sample reads the grains on the host (ctx.dem's GrainSet, published from a
+    // resident DEM phase first).
+    virtual bool reads_grains() const { return false; }
     // Opens probes/<name>.csv in `dir`; probes with field output also open their VTK series.
     void open(const std::string& dir);
     virtual void open_extra(const std::string& /*dir*/) {}

@@ -39,6 +39,7 @@ public:
     }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
     bool reads_particles() const override { return false; } // the grains (and bodies)
+    bool reads_grains() const override { return true; }
 
 private:
     int axis_, sign_;

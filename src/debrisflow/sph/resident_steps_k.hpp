@@ -1,7 +1,9 @@
 #pragma once
 // The small per-item steps of the resident SPH loop (sph/resident_sph.hpp) that the host
 // solver does with its own containers: the grid's cell starts, reordering, compaction, and the
-// predicates its reductions look for. Host/device functors.
+// predicates its reductions look for (the grid's cell starts and gathering by order are
+// exec/reorder_k.hpp's). Host/device functors.
+#include "debrisflow/exec/reorder_k.hpp"
 #include "debrisflow/flow/exit_faces_k.hpp"
 #include "debrisflow/flow/outlet_box_k.hpp"
 #include "debrisflow/particles/particle_set.hpp"
@@ -11,38 +13,9 @@
 
 namespace debrisflow::sph {
 
-// start[c] = the first sorted position whose key is >= c (a binary search over the keys in
-// sorted order), for c in [0, key_count]: with keys sorted stably, cell c's particles are
-// order[start[c]] .. order[start[c+1]-1], as CellGrid's counting sort leaves them.
-struct CellStarts {
-    const Index* key;   // per particle
-    const Index* order; // sorted position -> particle
-    Index n;
-    Index* start;
-    DF_HD void operator()(Index c) const {
-        Index lo = 0, hi = n;
-        while (lo < hi) {
-            const Index mid = lo + (hi - lo) / 2;
-            if (key[order[mid]] < c)
-                lo = mid + 1;
-            else
-                hi = mid;
-        }
-        start[c] = lo;
-    }
-};
-
-// out[i] = in[order[i]] for `width` values per item (a permutation applied by gathering).
-template <class T> struct GatherByOrder {
-    const T* in;
-    const Index* order;
-    T* out;
-    int width;
-    DF_HD void operator()(Index i) const {
-        const std::size_t to = std::size_t(i) * width, from = std::size_t(order[i]) * width;
-        for (int k = 0; k < width; ++k) out[to + k] = in[from + k];
-    }
-};
+using exec::CellStarts;
+using exec::GatherByOrder;
+using exec::OutOfOrder;
 
 // out[at[i]] = in[i] for the items with keep[i] (stream compaction, `at` the exclusive scan
 // of keep), `width` values per item.
@@ -152,12 +125,6 @@ struct FluidMass {
     DF_HD Real operator()(Index i) const { return pv.is_fluid(i) ? pv.mass[i] : Real(0); }
 };
 
-// Whether sorted position i holds another particle than i (the particles are not in order).
-struct OutOfOrder {
-    const Index* order;
-    DF_HD bool operator()(Index i) const { return order[i] != i; }
-};
-
 // f(i) >= value (the particle that attains a reduction's maximum).
 template <class F> struct AtLeast {
     F f;
@@ -171,7 +138,6 @@ struct Unhealthy {
     DF_HD bool operator()(Index i) const { return !healthy(i); }
 };
 
-static_assert(std::is_trivially_copyable_v<CellStarts>);
 static_assert(std::is_trivially_copyable_v<Unhealthy>);
 
 } // namespace debrisflow::sph

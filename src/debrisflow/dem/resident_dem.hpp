@@ -1,0 +1,506 @@
+#pragma once
+// The DEM phase resident in a memory space (issue #34): the grains, their interleaved contact
+// state and their contact slots (partners, keys, tangential springs and rolling moments) live
+// in the Space's memory (exec/host_space.hpp, exec/cuda_space.cuh), and every part of a step
+// runs there through the Space's primitives, launching the same host/device functors as the
+// DemSolver's device layout (dem.contact_pass = "slots"): the opening kick and drift
+// (GrainKickDrift), the cell grid (CellKeys, a stable sort, CellStarts), reordering by cell,
+// the neighbour rebuild's rows with their carried history (SlotRowFill with GrainCandidates and
+// WallCandidatesOf), the reverse index (a stable sort on the partner), one contact evaluation
+// per slot (GrainSlotForces) gathered per grain (GrainSlotGather), and the per-grain pass
+// (GrainOwnSlots: gravity, walls, closing kick) with each wall's load reduced there
+// (WallSlotLoad). Only a few numbers cross to the host in a step: the drift's report, each
+// wall's load and the contact count. The host's DemSolver keeps the parameters, the walls
+// (moved on the host and uploaded when they move), the step and the counters; its grains and
+// slots are brought up to date by publish() (probes that read grains, frames, checkpoints, the
+// end, grains leaving the domain). Written once; dem/resident_dem_host.cpp instantiates it for
+// the host's threads (what CI runs), exec/cuda_instantiations.cu for a CUDA device.
+#include "debrisflow/core/stopwatch.hpp"
+#include "debrisflow/dem/dem_solver.hpp"
+#include "debrisflow/dem/grain_kick_drift_k.hpp"
+#include "debrisflow/dem/resident_dem_backend.hpp"
+#include "debrisflow/dem/resident_dem_k.hpp"
+#include "debrisflow/dem/slot_candidates_k.hpp"
+#include "debrisflow/exec/reorder_k.hpp"
+#include "debrisflow/neighbors/cell_keys_k.hpp"
+#include <cmath>
+#include <vector>
+
+namespace debrisflow::dem {
+
+template <class Space> class ResidentDem final : public ResidentDemPhase {
+    template <class T> using Buffer = typename Space::template Buffer<T>;
+
+    // One kind of contact slots (grain-grain or grain-wall) with the rows of the last rebuild
+    // (old_*), which the next rebuild carries the history from (ContactSlots on the host).
+    struct Slots {
+        Index cap = 8;
+        Buffer<Index> count, partner, old_count;
+        Buffer<std::uint32_t> key, old_key;
+        Buffer<Vec3> xi, old_xi, mroll, old_mroll; // mroll empty without rolling memory
+        std::size_t bytes() const {
+            return count.bytes() + partner.bytes() + old_count.bytes() + key.bytes() +
+                   old_key.bytes() + xi.bytes() + old_xi.bytes() + mroll.bytes() +
+                   old_mroll.bytes();
+        }
+    };
+
+public:
+    explicit ResidentDem(DemSolver& host) : host_(host), g_(host.grains()) {}
+
+    const char* name() const override { return "dem"; }
+
+    void update_neighbors(bool) override {
+        upload_once();
+        if (!host_.built_) rebuild();
+    }
+
+    // As DemSolver::compute_forces: the step just taken ended with a force evaluation that the
+    // grains were kicked with; evaluate again only for a new wall layout or a removed wall.
+    void compute_forces() override {
+        upload_once();
+        if (host_.evaluated_ && host_.walls_.layout() == host_.walls_seen_) {
+            host_.evaluated_ = false;
+            return;
+        }
+        host_.evaluated_ = false;
+        if (!host_.built_ || host_.walls_.layout() != host_.walls_seen_) rebuild();
+        ScopedTimer timer(t_forces_);
+        forces(0);
+    }
+
+    void predictor(Real) override {}
+    void corrector(Real dt) override { advance(dt); }
+    void verlet_step(Real dt, bool) override { advance(dt); }
+    time::DtLimit stable_dt() const override { return host_.stable_dt(); }
+
+    // A grain left the domain or is not finite: the host's health check names it.
+    void check_health(Real t) const override {
+        if (!host_.bad_) return;
+        const_cast<ResidentDem*>(this)->publish();
+        host_.check_health(t);
+    }
+
+    void add_timings(time::Timings& t) const override {
+        host_.add_timings(t); // settling, before the resident loop took over
+        t.neighbors += t_neighbors_;
+        t.forces += t_forces_;
+        t.integration += t_integration_;
+    }
+
+    // The grains, their contact state and slots to the host's GrainSet and DemSolver.
+    void publish() override {
+        if (!resident_) return;
+        Space::synchronize();
+        const auto down = [](const auto& from, auto& to) {
+            to.resize(std::size_t(from.size()));
+            from.download(to.data());
+        };
+        down(pos_, g_.pos), down(vel_, g_.vel), down(spin_, g_.spin);
+        down(force_, g_.force), down(torque_, g_.torque);
+        down(radius_, g_.radius), down(mass_, g_.mass), down(inv_mass_, g_.inv_mass);
+        down(inv_inertia_, g_.inv_inertia), down(material_, g_.material), down(id_, g_.id);
+        down(hot_, host_.hot_);
+        const auto down_slots = [&](const Slots& from, ContactSlots& to) {
+            to.cap_ = from.cap;
+            down(from.count, to.count_), down(from.partner, to.partner_);
+            down(from.key, to.key_), down(from.xi, to.xi_), down(from.mroll, to.mroll_);
+        };
+        down_slots(grain_, host_.grain_slots_);
+        down_slots(wall_, host_.wall_slots_);
+        ++copies_to_host_;
+    }
+
+    void reload() override { resident_ = false; }
+
+    bool any_inside(const flow::OutletBox& box) override {
+        upload_once();
+        return Space::first_where(n_, GrainInside{pos_.data(), box}) < n_;
+    }
+
+    std::size_t memory_bytes() const override {
+        std::size_t b = pos_.bytes() + vel_.bytes() + spin_.bytes() + force_.bytes() +
+                        torque_.bytes() + radius_.bytes() + mass_.bytes() + inv_mass_.bytes() +
+                        inv_inertia_.bytes() + material_.bytes() + id_.bytes() + hot_.bytes() +
+                        acc_.bytes() + grain_.bytes() + wall_.bytes() + slot_out_.bytes() +
+                        slot_touching_.bytes() + wall_out_.bytes() + wall_touching_.bytes() +
+                        reverse_key_.bytes() + reverse_.bytes() + reverse_start_.bytes() +
+                        keys_.bytes() + order_.bytes() + start_cells_.bytes() + table_.bytes() +
+                        prims_.bytes() + wall_states_.bytes() + active_.bytes() + bounds_.bytes() +
+                        vec_scratch_.bytes() + real_scratch_.bytes() + index_scratch_.bytes() +
+                        key_scratch_.bytes() + byte_scratch_.bytes();
+        return b + sorter_.bytes() + reverse_sorter_.bytes();
+    }
+    long copies_to_host() const override { return copies_to_host_; }
+    long copies_from_host() const override { return copies_from_host_; }
+
+private:
+    // --- the state taken over from the host -----------------------------------------------
+    void upload_once() {
+        if (resident_) return;
+        n_ = g_.size();
+        const auto up = [](auto& to, const auto& from) {
+            to.upload(from.data(), Index(from.size()));
+        };
+        up(pos_, g_.pos), up(vel_, g_.vel), up(spin_, g_.spin), up(force_, g_.force);
+        up(torque_, g_.torque), up(radius_, g_.radius), up(mass_, g_.mass);
+        up(inv_mass_, g_.inv_mass), up(inv_inertia_, g_.inv_inertia);
+        up(material_, g_.material), up(id_, g_.id);
+        if (host_.hot_.size() == std::size_t(n_)) {
+            up(hot_, host_.hot_);
+        } else {
+            hot_.resize(n_);
+            Space::for_each(n_, LoadHot{view(), hot_.data()});
+        }
+        const auto up_slots = [&](Slots& to, const ContactSlots& from) {
+            to.cap = from.cap_;
+            up(to.count, from.count_), up(to.partner, from.partner_), up(to.key, from.key_);
+            up(to.xi, from.xi_), up(to.mroll, from.mroll_);
+        };
+        up_slots(grain_, host_.grain_slots_);
+        up_slots(wall_, host_.wall_slots_);
+        rolling_ = host_.grain_slots_.rolling_;
+        up(table_, host_.table_);
+        upload_walls(true);
+        // the grid's box as at the host's last rebuild (its periodic lengths give separations)
+        if (host_.built_ && n_ > 0) configure(host_.grid_lo_, host_.grid_hi_);
+        reverse_built_ = -1;
+        resident_ = true;
+        ++copies_from_host_;
+    }
+
+    GrainView view() {
+        return {pos_.data(),         vel_.data(),      spin_.data(), force_.data(),
+                torque_.data(),      radius_.data(),   mass_.data(), inv_mass_.data(),
+                inv_inertia_.data(), material_.data(), id_.data(),   n_};
+    }
+
+    PairTable table() { return {table_.data(), int(host_.materials_.size()), host_.reach_ > 0}; }
+
+    // The walls' primitives (when they moved or changed) and states (every evaluation: they
+    // are few), from the host's WallSet.
+    void upload_walls(bool primitives) {
+        const auto& prims = host_.walls_.primitives();
+        if (primitives) prims_.upload(prims.data(), Index(prims.size()));
+        const auto& wl = host_.walls_.walls();
+        states_.resize(wl.size());
+        for (std::size_t w = 0; w < wl.size(); ++w)
+            states_[w] = {wl[w].velocity, wl[w].origin, wl[w].material, wl[w].active,
+                          wl[w].record_contacts};
+        wall_states_.upload(states_.data(), Index(states_.size()));
+    }
+
+    // --- the step (DemSolver::advance and step) ------------------------------------------
+    void advance(Real dt) {
+        const auto& p = host_.params_;
+        if (!p.subcycle) {
+            step(dt);
+            return;
+        }
+        const long n = std::max(1L, long(std::ceil(dt / host_.dt_ - 1e-9)));
+        for (long s = 0; s < n; ++s) step(dt / Real(n));
+    }
+
+    void step(Real h) {
+        host_.current_h_ = h;
+        kick_drift(h);
+        auto& walls = host_.walls_;
+        walls.advance(h);
+        for (auto& w : walls.walls()) {
+            w.impulse += h * w.force; // force of the previous evaluation, held over the step
+            w.impulse_time += h;
+        }
+        const bool moving = walls.max_speed() > 0;
+        if (host_.drift_ > Real(0.5) * host_.skin_ || walls.layout() != host_.walls_seen_)
+            rebuild();
+        else if (moving)
+            upload_walls(true);
+        {
+            ScopedTimer timer(t_forces_);
+            forces(Real(0.5) * h);
+        }
+        host_.evaluated_ = true;
+    }
+
+    void kick_drift(Real h) {
+        ScopedTimer timer(t_integration_);
+        const GrainKickDrift move{view(),       hot_.data(), nullptr, h, host_.params_.dim == 2,
+                                  host_.domain_};
+        const DriftReport moved = Space::template fold<DriftReport>(n_, move);
+        if (moved.outside > 0 || !std::isfinite(moved.vmax2)) host_.bad_ = true;
+        host_.drift_ += h * (std::sqrt(moved.vmax2) + host_.walls_.max_speed());
+    }
+
+    // --- the neighbour rebuild (DemSolver::rebuild) ---------------------------------------
+    void rebuild() {
+        ScopedTimer timer(t_neighbors_);
+        host_.built_ = true;
+        host_.drift_ = 0;
+        host_.walls_seen_ = host_.walls_.layout();
+        ++host_.builds_;
+        if (n_ == 0) return;
+        configure_grid();
+        build_grid();
+        if (host_.params_.reorder) {
+            permute();
+            build_grid();
+        }
+        Space::for_each(n_, LoadHot{view(), hot_.data()});
+        const Real skin = host_.search_margin();
+        build_slots(grain_,
+                    GrainCandidates{grid_, pos_.data(), radius_.data(), id_.data(), nullptr, skin});
+        // the active primitives and their boxes, few: on the host, then uploaded
+        upload_walls(true);
+        const auto& prims = host_.walls_.primitives();
+        const auto& wl = host_.walls_.walls();
+        active_host_.clear();
+        bounds_host_.clear();
+        for (std::size_t k = 0; k < prims.size(); ++k)
+            if (wl[std::size_t(prims[k].wall)].active) {
+                active_host_.push_back(Index(k));
+                bounds_host_.push_back(PrimitiveBounds::of(prims[k]));
+            }
+        active_.upload(active_host_.data(), Index(active_host_.size()));
+        bounds_.upload(bounds_host_.data(), Index(bounds_host_.size()));
+        build_slots(wall_, WallCandidatesOf{prims_.data(), active_.data(), bounds_.data(),
+                                            Index(active_host_.size()), pos_.data(), radius_.data(),
+                                            skin});
+        Space::synchronize();
+    }
+
+    // Cells of one search radius over the grains' box (the whole length in periodic
+    // directions), as DemSolver::configure_grid.
+    void configure_grid() {
+        const Domain& dom = host_.domain_;
+        Bounds box = Space::template fold<Bounds>(n_, GrainBounds{pos_.data()});
+        Bounds::combine(box, Bounds{dom.hi, dom.lo}); // the host's fold starts there
+        Vec3 lo = box.lo, hi = box.hi;
+        const Real radius = 2 * host_.max_radius_ + host_.search_margin();
+        for (int d = 0; d < 3; ++d) {
+            if (dom.periodic[d] || !(hi[d] >= lo[d])) {
+                lo[d] = dom.lo[d], hi[d] = dom.hi[d];
+            } else {
+                lo[d] -= radius, hi[d] += radius;
+            }
+        }
+        host_.grid_lo_ = lo, host_.grid_hi_ = hi;
+        configure(lo, hi);
+    }
+
+    void configure(Vec3 lo, Vec3 hi) {
+        config_.configure(lo, hi, 2 * host_.max_radius_ + host_.search_margin(), host_.params_.dim,
+                          host_.domain_.periodic);
+        grid_ = config_.view();
+        keys_count_ = Index(config_.cell_count());
+    }
+
+    void build_grid() {
+        keys_.resize(n_);
+        order_.resize(n_);
+        start_cells_.resize(keys_count_ + 1);
+        const Real* p = &pos_.data()[0].x;
+        Space::for_each(n_, neighbors::CellKeys{grid_, p, p + 1, p + 2, 3, nullptr, keys_.data()});
+        sorter_.sort(keys_.data(), n_, keys_count_, order_.data());
+        Space::for_each(keys_count_ + 1,
+                        exec::CellStarts{keys_.data(), order_.data(), n_, start_cells_.data()});
+        grid_.start = start_cells_.data();
+        grid_.order = order_.data();
+    }
+
+    // Every grain array and both kinds of slot rows gathered into the grid's order (the
+    // slots' partners are rebuilt right after; their keys and history move with their rows).
+    void permute() {
+        for (auto* a : {&pos_, &vel_, &spin_, &force_, &torque_}) gather(*a, vec_scratch_, 1);
+        for (auto* a : {&radius_, &mass_, &inv_mass_, &inv_inertia_}) gather(*a, real_scratch_, 1);
+        gather(material_, byte_scratch_, 1);
+        gather(id_, key_scratch_, 1);
+        for (Slots* s : {&grain_, &wall_}) {
+            if (s->count.size() != n_) continue; // never built: nothing to carry
+            const int cap = int(s->cap);
+            gather(s->count, index_scratch_, 1);
+            gather(s->key, key_scratch_, cap);
+            gather(s->xi, vec_scratch_, cap);
+            if (s->mroll.size() > 0) gather(s->mroll, vec_scratch_, cap);
+        }
+    }
+    template <class T> void gather(Buffer<T>& a, Buffer<T>& scratch, int width) {
+        scratch.resize(width * n_);
+        Space::for_each(n_, exec::GatherByOrder<T>{a.data(), order_.data(), scratch.data(), width});
+        a.swap(scratch);
+    }
+
+    // ContactSlots::build: each grain's row from its candidates, carrying the history of keys
+    // that reappear; a row past the capacity grows it and the rows are filled again.
+    template <class Candidates> void build_slots(Slots& s, const Candidates& candidates) {
+        s.old_count.swap(s.count);
+        s.old_key.swap(s.key);
+        s.old_xi.swap(s.xi);
+        s.old_mroll.swap(s.mroll);
+        const Index old_cap = s.cap;
+        if (s.old_count.size() != n_) {
+            s.old_count.resize(n_);
+            Space::for_each(n_, Fill<Index>{s.old_count.data(), 0});
+        }
+        const bool had_rolling = s.old_mroll.size() == s.old_xi.size() && s.old_xi.size() > 0;
+        for (;;) {
+            const Index cap = s.cap, slots = n_ * cap;
+            s.count.resize(n_);
+            s.partner.resize(slots);
+            s.key.resize(slots);
+            s.xi.resize(slots);
+            s.mroll.resize(rolling_ ? slots : 0);
+            const SlotRowFill<Candidates> fill{candidates,
+                                               s.old_count.data(),
+                                               s.old_key.data(),
+                                               s.old_xi.data(),
+                                               had_rolling ? s.old_mroll.data() : nullptr,
+                                               s.count.data(),
+                                               s.partner.data(),
+                                               s.key.data(),
+                                               s.xi.data(),
+                                               rolling_ ? s.mroll.data() : nullptr,
+                                               cap,
+                                               old_cap};
+            const Index worst = Index(Space::max_of(n_, fill));
+            if (worst <= cap) return;
+            s.cap = worst + worst / 4 + 2; // history still in old_*: retry with room
+        }
+    }
+
+    template <class T> struct Fill {
+        T* a;
+        T value;
+        DF_HD void operator()(Index i) const { a[i] = value; }
+    };
+
+    // The slots naming each grain as partner, in slot order: a stable sort of the slots on
+    // the partner they name (empty slots last), rebuilt with the lists.
+    void build_reverse() {
+        const Index cap = grain_.cap, slots = n_ * cap;
+        reverse_key_.resize(slots);
+        reverse_.resize(slots);
+        reverse_start_.resize(n_ + 2);
+        Space::for_each(slots, SlotPartnerKey{cap, grain_.count.data(), grain_.partner.data(), n_,
+                                              reverse_key_.data()});
+        reverse_sorter_.sort(reverse_key_.data(), slots, n_ + 1, reverse_.data());
+        Space::for_each(n_ + 2, exec::CellStarts{reverse_key_.data(), reverse_.data(), slots,
+                                                 reverse_start_.data()});
+        reverse_built_ = host_.builds_;
+    }
+
+    // --- the force evaluation (DemSolver::forces in the device's layout) -----------------
+    void forces(Real half_kick) {
+        const bool ends_step = half_kick > 0;
+        const bool measure = host_.measure_contact_force_;
+        const Real h = host_.current_h_;
+        auto& wl = host_.walls_.walls();
+        for (auto& w : wl) w.contacts.clear();
+        upload_walls(false);
+        if (n_ == 0) {
+            for (auto& w : wl) w.force = w.moment = {};
+            host_.contacts_ = 0;
+            return;
+        }
+        if (reverse_built_ != host_.builds_) build_reverse();
+        acc_.resize(6 * n_);
+        const Index gcap = grain_.cap, gslots = n_ * gcap;
+        slot_out_.resize(9 * gslots);
+        slot_touching_.resize(gslots);
+        const GrainContactInputs cin{hot_.data(),
+                                     n_,
+                                     grain_.partner.data(),
+                                     grain_.count.data(),
+                                     grain_.xi.data(),
+                                     rolling_ ? grain_.mroll.data() : nullptr,
+                                     gcap,
+                                     table(),
+                                     grid_,
+                                     ends_step ? h : 0};
+        Space::for_each(gslots, GrainSlotForces{cin, slot_out_.data(), slot_touching_.data()});
+        const SlotReport gg = Space::template fold<SlotReport>(
+            n_, GrainSlotGather{gcap, grain_.count.data(), slot_out_.data(), slot_touching_.data(),
+                                reverse_start_.data(), reverse_.data(), acc_.data(), measure});
+        GrainOwnInputs in{};
+        in.g = view();
+        in.hot = hot_.data();
+        in.acc = acc_.data();
+        in.table = table();
+        in.gravity = host_.params_.gravity;
+        in.h_contact = ends_step ? h : 0;
+        in.h_step = h;
+        in.half = half_kick;
+        in.plane = host_.params_.dim == 2;
+        in.prims = prims_.data();
+        in.walls = wall_states_.data();
+        in.wall_partner = wall_.partner.data();
+        in.wall_count = wall_.count.data();
+        in.wall_xi = wall_.xi.data();
+        in.wall_roll = rolling_ ? wall_.mroll.data() : nullptr;
+        in.wall_capacity = wall_.cap;
+        const Index wslots = n_ * wall_.cap;
+        wall_out_.resize(9 * wslots);
+        wall_touching_.resize(wslots);
+        const SlotReport own = Space::template fold<SlotReport>(
+            n_, GrainOwnSlots{GrainOwnPass{in}, wall_out_.data(), wall_touching_.data(), nullptr,
+                              nullptr, measure});
+        for (std::size_t w = 0; w < wl.size(); ++w) {
+            const WallSlotLoad load{int(w),
+                                    wl[w].origin,
+                                    prims_.data(),
+                                    wall_.partner.data(),
+                                    wall_.count.data(),
+                                    wall_.cap,
+                                    wall_out_.data(),
+                                    wall_touching_.data()};
+            const LoadSum sum = Space::template fold<LoadSum>(n_, load);
+            wl[w].force = sum.force;
+            wl[w].moment = sum.moment;
+        }
+        host_.contacts_ = gg.touching + own.touching;
+        host_.sum_contact_force_ = measure ? gg.force_sum + own.force_sum : 0;
+    }
+
+    DemSolver& host_;
+    GrainSet& g_;
+    bool resident_ = false, rolling_ = false;
+    Index n_ = 0;
+    // grains (GrainView's arrays), their contact pass's copy, their contact sums
+    Buffer<Vec3> pos_, vel_, spin_, force_, torque_;
+    Buffer<Real> radius_, mass_, inv_mass_, inv_inertia_;
+    Buffer<std::uint8_t> material_;
+    Buffer<std::uint32_t> id_;
+    Buffer<GrainState> hot_;
+    Buffer<Real> acc_;
+    // contact slots, each slot's evaluation, the reverse index
+    Slots grain_, wall_;
+    Buffer<Real> slot_out_, wall_out_;
+    Buffer<std::uint8_t> slot_touching_, wall_touching_;
+    Buffer<Index> reverse_key_, reverse_, reverse_start_;
+    long reverse_built_ = -1;
+    typename Space::Sorter reverse_sorter_;
+    // the cell grid
+    neighbors::CellGrid config_; // configured on the host: only its view is used
+    neighbors::GridView grid_{};
+    Index keys_count_ = 0;
+    Buffer<Index> keys_, order_, start_cells_;
+    typename Space::Sorter sorter_;
+    // materials and walls
+    Buffer<PairParams> table_;
+    Buffer<WallPrimitive> prims_;
+    Buffer<WallState> wall_states_;
+    Buffer<Index> active_;
+    Buffer<PrimitiveBounds> bounds_;
+    std::vector<WallState> states_;
+    std::vector<Index> active_host_;
+    std::vector<PrimitiveBounds> bounds_host_;
+    // reordering's scratch
+    Buffer<Vec3> vec_scratch_;
+    Buffer<Real> real_scratch_;
+    Buffer<Index> index_scratch_;
+    Buffer<std::uint32_t> key_scratch_;
+    Buffer<std::uint8_t> byte_scratch_;
+    long copies_to_host_ = 0, copies_from_host_ = 0;
+    double t_neighbors_ = 0, t_forces_ = 0, t_integration_ = 0;
+};
+
+} // namespace debrisflow::dem

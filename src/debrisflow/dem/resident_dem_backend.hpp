@@ -1,0 +1,47 @@
+#pragma once
+// Which backend runs the DEM phase's time loop (exec.backend, --backend), as for the SPH phase
+// (sph/resident_backend.hpp): "host" is the DemSolver's own loops; "host_resident" the resident
+// loop (dem/resident_dem.hpp) in the host's memory, the device's code path run where there is
+// no GPU (CI); "cuda" the same loop in a CUDA device's memory.
+#include "debrisflow/flow/outlet_box_k.hpp"
+#include "debrisflow/time/phase.hpp"
+#include <cstddef>
+#include <memory>
+#include <string>
+
+namespace debrisflow::dem {
+
+class DemSolver;
+
+// The DEM phase of a resident backend, as the Simulation sees it. The host's DemSolver keeps
+// the parameters, the walls, the step and the counters; the grains and their contact slots
+// live in the backend's memory and are copied to the host's GrainSet and slots by publish().
+class ResidentDemPhase : public time::Phase {
+public:
+    // Bytes held in the backend's memory (grains, contact slots, grid, scratch).
+    virtual std::size_t memory_bytes() const = 0;
+    // Times the grains were copied to the host (publish) and from it (reload).
+    virtual long copies_to_host() const = 0;
+    virtual long copies_from_host() const = 0;
+    // The host's DemSolver changed the grains or their slots (a checkpoint restored, grains
+    // that left the domain removed there after a publish): take its state over again.
+    virtual void reload() = 0;
+    // Whether some grain's centre is inside an outlet's box (looked for where the grains are;
+    // the rare removal itself runs on the host between a publish and a reload).
+    virtual bool any_inside(const flow::OutletBox& box) = 0;
+};
+
+// How `check` and the log name where the DEM phase runs on `backend`.
+std::string backend_words(const std::string& backend);
+
+// The resident DEM phase for `backend` ("host_resident" or "cuda") on the host solver's
+// grains. Throws InputError (naming `where`) when this build has no such backend.
+std::unique_ptr<ResidentDemPhase> make_resident_dem(const std::string& backend, DemSolver& host,
+                                                    const std::string& where);
+
+// Set by a build with the CUDA backend (exec/cuda_instantiations.cu).
+using ResidentDemFactory = std::unique_ptr<ResidentDemPhase> (*)(DemSolver&,
+                                                                 const std::string& where);
+void set_cuda_dem_factory(ResidentDemFactory f);
+
+} // namespace debrisflow::dem

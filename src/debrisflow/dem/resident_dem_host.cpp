@@ -1,0 +1,42 @@
+// The resident DEM loop on the host's memory and threads (exec.backend = "host_resident"), and
+// the choice of backend for the DEM phase.
+#include "debrisflow/core/error.hpp"
+#include "debrisflow/dem/resident_dem.hpp"
+#include "debrisflow/exec/host_space.hpp"
+
+namespace debrisflow::dem {
+
+template class ResidentDem<exec::HostSpace>;
+
+namespace {
+ResidentDemFactory cuda_factory = nullptr;
+}
+
+void set_cuda_dem_factory(ResidentDemFactory f) {
+    cuda_factory = f;
+}
+
+std::string backend_words(const std::string& backend) {
+    if (backend == "host") return "host, the DEM phase on the host's threads (OpenMP)";
+    return backend + ", the DEM phase resident " +
+           (backend == "cuda" ? "on the CUDA device"
+                              : "in the host's memory and run on its threads, the device's code "
+                                "path") +
+           "; walls moved on the host; grains are copied to the host only for the probes that "
+           "read them, frames, checkpoints, grains leaving the domain and the end";
+}
+
+std::unique_ptr<ResidentDemPhase> make_resident_dem(const std::string& backend, DemSolver& host,
+                                                    const std::string& where) {
+    if (backend == "host_resident") return std::make_unique<ResidentDem<exec::HostSpace>>(host);
+    if (backend == "cuda") {
+        if (!cuda_factory)
+            throw InputError(where + ": this build has no CUDA backend; configure it with "
+                                     "`cmake --preset cuda` (nvcc) and run build-cuda/debrisflow, "
+                                     "or use \"host\" or \"host_resident\"");
+        return cuda_factory(host, where);
+    }
+    throw InputError(where + ": unknown backend '" + backend + "'");
+}
+
+} // namespace debrisflow::dem

@@ -1,0 +1,62 @@
+#pragma once
+// The small per-grain steps of the resident DEM loop (dem/resident_dem.hpp) that the host
+// solver does with its own containers: the contact pass's copy of the grain state, the grains'
+// bounding box, and the keys of the reverse index. Host/device functors.
+#include "debrisflow/dem/grain_contact_k.hpp"
+#include "debrisflow/flow/outlet_box_k.hpp"
+#include <cstdint>
+#include <type_traits>
+
+namespace debrisflow::dem {
+
+// hot[i] = grain i's state as the contact pass reads it (DemSolver::refresh_hot).
+struct LoadHot {
+    GrainView g;
+    GrainState* hot;
+    DF_HD void operator()(Index i) const { hot[i] = GrainState::load(g, i); }
+};
+
+// The box around a set of points (empty by default: the fold's identity).
+struct Bounds {
+    Vec3 lo{Real(1e300), Real(1e300), Real(1e300)}, hi{-Real(1e300), -Real(1e300), -Real(1e300)};
+    DF_HD static void combine(Bounds& a, const Bounds& b) {
+        for (int d = 0; d < 3; ++d) {
+            a.lo[d] = b.lo[d] < a.lo[d] ? b.lo[d] : a.lo[d];
+            a.hi[d] = b.hi[d] > a.hi[d] ? b.hi[d] : a.hi[d];
+        }
+    }
+};
+
+// Adds grain i's centre to the box (the grid's extent, DemSolver::configure_grid).
+struct GrainBounds {
+    const Vec3* pos;
+    DF_HD void operator()(Index i, Bounds& b) const { Bounds::combine(b, Bounds{pos[i], pos[i]}); }
+};
+
+// The reverse index's sort key of slot s = i * capacity + k: the partner it names, or n (after
+// every grain) for an empty slot. Sorted stably, the slots naming grain j come in slot order,
+// as DemSolver::slot_contacts's counting sort leaves them.
+struct SlotPartnerKey {
+    Index capacity;
+    const Index *count, *partner;
+    Index n;
+    Index* key;
+    DF_HD void operator()(Index s) const {
+        const Index i = s / capacity, k = s % capacity;
+        key[s] = k < count[i] ? partner[s] : n;
+    }
+};
+
+// Whether grain i's centre is inside an outlet's box.
+struct GrainInside {
+    const Vec3* pos;
+    flow::OutletBox box;
+    DF_HD bool operator()(Index i) const { return box.contains(pos[i]); }
+};
+
+static_assert(std::is_trivially_copyable_v<LoadHot>);
+static_assert(std::is_trivially_copyable_v<GrainInside>);
+static_assert(std::is_trivially_copyable_v<GrainBounds>);
+static_assert(std::is_trivially_copyable_v<SlotPartnerKey>);
+
+} // namespace debrisflow::dem
