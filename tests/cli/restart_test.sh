@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Checkpoint and restart (issue #31). For fluid cases (a gate, Laminar+SPS, Herschel-Bulkley,
 # an inlet and an outlet), grain cases (a settled column behind a gate; a hopper feed with its
-# random sizes; clumps; the granular flume), rigid-body cases (a block sliding in water; the
+# random sizes; clumps; the granular flume; the column and the flume on the resident DEM loop), rigid-body cases (a block sliding in water; the
 # reduced container case; a hinged disc and a box on a spring falling into grains; mesh rocks
 # from a feed) and coupled cases (FEM alone, SPH-FEM, SPH-DEM drag, the
 # SPH-DEM-FEM retaining dam), a run to T and the same run restarted from its checkpoint near
@@ -33,16 +33,18 @@ same_output() {
 }
 
 inputs="$src/tests/cli/inputs"
-while read -r name file end; do
+while read -r name file end extra; do
     half=$(/usr/bin/python3 -c "print($end / 2)")
     a="$out/$name.full"; b="$out/$name.restarted"
+    # shellcheck disable=SC2086 # $extra: further options, split into words
     "$exe" run "$file" --out "$a" --threads 2 --quiet --set time.end=$end \
-        --set output.checkpoint_every=$half || fail "$name: the full run failed"
+        --set output.checkpoint_every=$half $extra || fail "$name: the full run failed"
     [ "$(ls "$a"/checkpoint/*.dfc | wc -l)" -eq 2 ] || fail "$name: expected 2 checkpoints"
     cp -r "$a" "$b"
     rm "$(newest "$b")" # keep the one near T/2
+    # shellcheck disable=SC2086
     "$exe" run "$file" --restart "$b" --threads 2 --quiet --set time.end=$end \
-        --set output.checkpoint_every=$half || fail "$name: the restart failed"
+        --set output.checkpoint_every=$half $extra || fail "$name: the restart failed"
     grep -q "restarted from $b/checkpoint/step_" "$b/log.txt" || fail "$name: log lacks the restart"
     same_output "$a" "$b" "$name"
 done <<CASES
@@ -52,6 +54,8 @@ gate_sps_resident $inputs/restart_gate_sps_resident2d.toml 0.3
 hb_inlet_outlet $inputs/restart_hb_inlet2d.toml 1.2
 gate_inlet_outlet_cells $inputs/restart_gate_inlet_outlet_cells2d.toml 0.4
 dem_column_settled_gate $src/cases/deposits/column_collapse2d.toml 0.2
+dem_column_resident $src/cases/deposits/column_collapse2d.toml 0.2 --backend host_resident
+dem_flume_resident $src/cases/flume/flume30_reduced.toml 0.01 --backend host_resident
 dem_hopper_feed_baffles $src/cases/debris/baffles_hopper_dem.toml 0.06
 dem_clumps $src/cases/deposits/column_collapse2d_clumps.toml 0.1
 dem_flume $src/cases/flume/flume30_reduced.toml 0.01

@@ -13,22 +13,21 @@
 namespace debrisflow::dem {
 
 // Pass 1, slot s = i * capacity + k: out[9 s ...] = force on i, torque on i, torque on j, and
-// touching[s] = whether the pair touched (or was within an adhesive reach); zeros for an empty
-// slot. The slot's tangential spring (and rolling moment) is updated where it is stored.
+// touching[s] = whether the pair touched (or was within an adhesive reach). An empty slot
+// (k >= count[i]) is left alone: pass 2 reads only the slots below a grain's count. The slot's
+// tangential spring (and rolling moment) is updated where it is stored.
 struct GrainSlotForces {
     GrainContactInputs in;
     Real* out;
     std::uint8_t* touching;
     DF_HD void operator()(Index s) const {
         const Index i = s / in.capacity, k = s % in.capacity;
+        if (k >= in.count[i]) return;
         Real* o = out + 9 * std::size_t(s);
         GrainPairForce c{};
-        bool t = false;
-        if (k < in.count[i]) {
-            const HistoryRef h{in.xi + s, in.mroll ? in.mroll + s : nullptr};
-            t = grain_slot_force(in.table, in.grid, in.grains[i], in.grains[in.partner[s]], in.h, h,
-                                 c);
-        }
+        const HistoryRef h{in.xi + s, in.mroll ? in.mroll + s : nullptr};
+        const bool t =
+            grain_slot_force(in.table, in.grid, in.grains[i], in.grains[in.partner[s]], in.h, h, c);
         touching[s] = t ? 1 : 0;
         const Vec3 v[3] = {c.force_i, c.torque_i, c.torque_j};
         for (int q = 0; q < 3; ++q) o[3 * q] = v[q].x, o[3 * q + 1] = v[q].y, o[3 * q + 2] = v[q].z;

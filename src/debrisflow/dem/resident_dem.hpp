@@ -339,7 +339,7 @@ private:
         const Index old_cap = s.cap;
         if (s.old_count.size() != n_) {
             s.old_count.resize(n_);
-            Space::for_each(n_, Fill<Index>{s.old_count.data(), 0});
+            Space::for_each(n_, FillWith<Index>{s.old_count.data(), 0});
         }
         const bool had_rolling = s.old_mroll.size() == s.old_xi.size() && s.old_xi.size() > 0;
         for (;;) {
@@ -366,12 +366,6 @@ private:
             s.cap = worst + worst / 4 + 2; // history still in old_*: retry with room
         }
     }
-
-    template <class T> struct Fill {
-        T* a;
-        T value;
-        DF_HD void operator()(Index i) const { a[i] = value; }
-    };
 
     // The slots naming each grain as partner, in slot order: a stable sort of the slots on
     // the partner they name (empty slots last), rebuilt with the lists.

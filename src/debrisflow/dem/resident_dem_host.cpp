@@ -23,7 +23,8 @@ std::string backend_words(const std::string& backend) {
                               : "in the host's memory and run on its threads, the device's code "
                                 "path") +
            "; walls moved on the host; grains are copied to the host only for the probes that "
-           "read them, frames, checkpoints, grains leaving the domain and the end";
+           "read them, frames, checkpoints, grains leaving the domain or entering an outlet, and "
+           "the end";
 }
 
 std::unique_ptr<ResidentDemPhase> make_resident_dem(const std::string& backend, DemSolver& host,

@@ -47,6 +47,13 @@ struct SlotPartnerKey {
     }
 };
 
+// a[i] = value.
+template <class T> struct FillWith {
+    T* a;
+    T value;
+    DF_HD void operator()(Index i) const { a[i] = value; }
+};
+
 // Whether grain i's centre is inside an outlet's box.
 struct GrainInside {
     const Vec3* pos;
