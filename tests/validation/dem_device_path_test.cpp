@@ -331,3 +331,11 @@ every = 0.005
     check_resident(file, {}, 0.25, 0.01, &at_end);
     EXPECT_LT(at_end, at_start); // some left, and were removed
 }
+// A hopper feed releasing grains onto baffles (structures of boxes): each release copies the
+// grains to the host, where the new ones are placed, and back.
+TEST(DemResident, HopperFeedOntoBaffles) {
+    std::size_t at_end = 0;
+    check_resident("cases/debris/baffles_hopper_dem.toml", {"time.end=0.3", "output.vtk=false"},
+                   0.3, 0.01, &at_end);
+    EXPECT_GT(at_end, 0u);
+}

@@ -249,7 +249,16 @@ RunReport Simulation::run(const RunOptions& opt) {
                     in->apply(set_, s.t, s.dt);
                 }
             }
-            for (auto& f : feeds_) f->apply(*dem_, s.t, s.dt);
+            for (auto& f : feeds_) {
+                if (resident_dem_ && f->due(s.t, s.dt)) {
+                    // grains are placed by the host among the grains near the region
+                    resident_dem_->publish();
+                    f->apply(*dem_, s.t, s.dt);
+                    resident_dem_->reload();
+                } else {
+                    f->apply(*dem_, s.t, s.dt); // adds to the debt only
+                }
+            }
             for (auto& f : rock_feeds_)
                 f->apply(*rigid_, dem_ ? &grains_ : nullptr, probe_context().fluid, s.t, s.dt);
             for (auto& out : outlets_) {

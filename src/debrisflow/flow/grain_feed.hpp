@@ -18,6 +18,10 @@ public:
 
     // Inserts what is owed after a step of dt ending at t.
     void apply(dem::DemSolver& dem, Real t, Real dt);
+    // Whether the step of dt ending at t leaves at least the next grain owed, i.e. whether
+    // apply() would place grains (and read the grains' positions) rather than only add to the
+    // debt: what a resident DEM loop asks before it copies its grains to the host.
+    bool due(Real t, Real dt) const { return owed() + q_.at(t) * dt >= volume_of(next_d_); }
 
     // One grain of the smallest size the feed can release (for the DEM time step).
     Real smallest_diameter() const { return spec_.size.min; }

@@ -199,17 +199,17 @@ namespace {
 // diffusion model, both time schemes. The DEM phase (dem/resident_dem.hpp): spherical grains
 // (discs in 2D) with every contact law and rolling model, walls of planes, boxes and triangle
 // meshes (fixed, moving, removed by remove_at), settling (on the host, before the loop), the
-// domain exit and outlets (grains that leave are removed on the host), every grain probe but the
-// pressure map. Anything else is rejected here, so that `check` rejects it too.
+// domain exit, outlets and grain feeds (grains that leave are removed, and new ones placed, on
+// the host between a copy of the grains there and back), every grain probe but the pressure
+// map. Anything else is rejected here, so that `check` rejects it too.
 void require_backend_supports(const CaseSpec& c) {
     if (c.backend == "host") return;
     const auto no = [&](bool present, const std::string& what) {
         if (present)
             throw InputError(fmt::format(
                 "{}: exec.backend = \"{}\" runs either fluid (with walls, inlets, outlets and "
-                "rigid bodies) or spherical grains (with walls, gates, outlets and the domain "
-                "exit) so "
-                "far; this case has {} (use exec.backend = \"host\")",
+                "rigid bodies) or spherical grains (with walls, gates, feeds, outlets and the "
+                "domain exit) so far; this case has {} (use exec.backend = \"host\")",
                 c.exec_origin.at("backend"), c.backend, what));
     };
     no(c.fluids.empty() && !c.has_dem, "neither fluid nor grains");
@@ -217,7 +217,6 @@ void require_backend_supports(const CaseSpec& c) {
     if (!c.has_dem) return;
     no(!c.fluids.empty(), "both fluid and grains");
     no(c.has_bodies(), "grains and rigid bodies");
-    no(!c.dem.feeds.empty(), "a grain feed");
     for (const auto& g : c.dem.grains)
         no(!g.clump_centers.empty(), "clumps (" + g.origin.block() + ")");
     for (const auto& p : c.probes)
