@@ -2,6 +2,7 @@
 // the choice of backend for the DEM phase.
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/dem/resident_dem.hpp"
+#include "debrisflow/exec/backend_choice.hpp"
 #include "debrisflow/exec/host_space.hpp"
 
 namespace debrisflow::dem {
@@ -29,15 +30,9 @@ std::string backend_words(const std::string& backend) {
 
 std::unique_ptr<ResidentDemPhase> make_resident_dem(const std::string& backend, DemSolver& host,
                                                     const std::string& where) {
-    if (backend == "host_resident") return std::make_unique<ResidentDem<exec::HostSpace>>(host);
-    if (backend == "cuda") {
-        if (!cuda_factory)
-            throw InputError(where + ": this build has no CUDA backend; configure it with "
-                                     "`cmake --preset cuda` (nvcc) and run build-cuda/debrisflow, "
-                                     "or use \"host\" or \"host_resident\"");
-        return cuda_factory(host, where);
-    }
-    throw InputError(where + ": unknown backend '" + backend + "'");
+    return exec::choose_resident<ResidentDemPhase>(
+        backend, host, where, [&] { return std::make_unique<ResidentDem<exec::HostSpace>>(host); },
+        cuda_factory);
 }
 
 } // namespace debrisflow::dem

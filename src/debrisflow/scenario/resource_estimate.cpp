@@ -113,11 +113,11 @@ double bytes_per_grain(const io::CaseSpec& c) {
     // device's layout, each with the previous rebuild's row, its 9-Real result and a flag, and
     // a reverse-index entry per grain slot: 3,129 B, above the 2,127 B per grain measured on
     // box100k and flume30.
-    const double resident =
-        c.backend == "host_resident" && c.fluids.empty()
-            ? 19 * sizeof(Real) + 5 + 17 * sizeof(Real) +
-                  20 * (2 * (8 + 3 * sizeof(Real)) + 9 * sizeof(Real) + 1) + 12 * 8
-            : 0;
+    const double resident = c.backend == "host_resident" && c.fluids.empty()
+                                ? 19 * sizeof(Real) + 5 + 17 * sizeof(Real) +
+                                      20 * (2 * (8 + 3 * sizeof(Real)) + 9 * sizeof(Real) + 1) +
+                                      12 * 8
+                                : 0;
     return 19 * sizeof(Real) + 5 + 12 * (8 + 6 * sizeof(Real)) + 6 * sizeof(Real) + slot_pass +
            resident;
 }

@@ -1,6 +1,7 @@
 // The resident SPH loop on the host's memory and threads (exec.backend = "host_resident"), and
 // the choice of backend.
 #include "debrisflow/core/error.hpp"
+#include "debrisflow/exec/backend_choice.hpp"
 #include "debrisflow/exec/host_space.hpp"
 #include "debrisflow/sph/resident_backend.hpp"
 #include "debrisflow/sph/resident_sph.hpp"
@@ -31,15 +32,9 @@ std::string backend_words(const std::string& backend, bool bodies) {
 
 std::unique_ptr<ResidentPhase> make_resident_sph(const std::string& backend, SphSolver& host,
                                                  const std::string& where) {
-    if (backend == "host_resident") return std::make_unique<ResidentSph<exec::HostSpace>>(host);
-    if (backend == "cuda") {
-        if (!cuda_factory)
-            throw InputError(where + ": this build has no CUDA backend; configure it with "
-                                     "`cmake --preset cuda` (nvcc) and run build-cuda/debrisflow, "
-                                     "or use \"host\" or \"host_resident\"");
-        return cuda_factory(host, where);
-    }
-    throw InputError(where + ": unknown backend '" + backend + "'");
+    return exec::choose_resident<ResidentPhase>(
+        backend, host, where, [&] { return std::make_unique<ResidentSph<exec::HostSpace>>(host); },
+        cuda_factory);
 }
 
 } // namespace debrisflow::sph
