@@ -84,8 +84,7 @@ void DemSolver::state(checkpoint::Archive& ar) {
     map_clumps();
     if (built_ && grains_.size() > 0) {
         // the grid's box as at the last rebuild (its periodic lengths give the separations)
-        grid_.configure(grid_lo_, grid_hi_, 2 * max_radius_ + search_margin(), params_.dim,
-                        domain_.periodic);
+        grid_.configure(grid_lo_, grid_hi_, grid_cell(), params_.dim, domain_.periodic);
         const Real* p = &grains_.pos[0].x;
         grid_.build(p, p + 1, p + 2, grains_.size(), 3);
     }

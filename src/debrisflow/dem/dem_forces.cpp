@@ -59,13 +59,18 @@ struct ThreadSink {
 
 } // namespace
 
-GrainOwnInputs DemSolver::own_inputs(Real half_kick) {
-    const bool ends_step = half_kick > 0;
+const std::vector<WallState>& DemSolver::refresh_wall_states() {
     const auto& wl = walls_.walls();
     wall_states_.resize(wl.size());
     for (std::size_t w = 0; w < wl.size(); ++w)
         wall_states_[w] = {wl[w].velocity, wl[w].origin, wl[w].material, wl[w].active,
                            wl[w].record_contacts};
+    return wall_states_;
+}
+
+GrainOwnInputs DemSolver::own_inputs(Real half_kick) {
+    const bool ends_step = half_kick > 0;
+    refresh_wall_states();
     auto& moving = walls_.nodes();
     if (moving.impulse.size() != moving.x.size()) moving.impulse.assign(moving.x.size(), Vec3{});
     const bool bodies = obstacles_ && obstacle_slots_.slots() > 0;

@@ -133,25 +133,16 @@ void DemSolver::rebuild() {
 void DemSolver::configure_grid() {
     // Cells of one search radius over the grains' bounding box (the whole length in periodic
     // directions), so that sparse grains in a large domain do not pay for empty cells.
-    const Index n = grains_.size();
-    Vec3 lo = domain_.hi, hi = domain_.lo;
-    const Vec3* x = grains_.pos.data();
-    struct Box {
-        Vec3 lo, hi;
-        void add(const Vec3& p) {
-            lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-            hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-        }
-    };
-    const Box box = exec::reduce(
-        n, Box{lo, hi}, [&](Index i, Box& b) { b.add(x[i]); },
-        [](Box& a, const Box& b) {
-            a.lo = {std::min(a.lo.x, b.lo.x), std::min(a.lo.y, b.lo.y), std::min(a.lo.z, b.lo.z)};
-            a.hi = {std::max(a.hi.x, b.hi.x), std::max(a.hi.y, b.hi.y), std::max(a.hi.z, b.hi.z)};
-        },
-        exec::serial_below(parallel_min + 1));
-    lo = box.lo, hi = box.hi;
-    const Real radius = 2 * max_radius_ + search_margin();
+    const Bounds box = exec::reduce(grains_.size(), Bounds{domain_.hi, domain_.lo},
+                                    GrainBounds{grains_.pos.data()}, Bounds::combine,
+                                    exec::serial_below(parallel_min + 1));
+    set_grid_box(box);
+    grid_.configure(grid_lo_, grid_hi_, grid_cell(), params_.dim, domain_.periodic);
+}
+
+void DemSolver::set_grid_box(Bounds b) {
+    Vec3 lo = b.lo, hi = b.hi;
+    const Real radius = grid_cell();
     for (int d = 0; d < 3; ++d) {
         if (domain_.periodic[d] || !(hi[d] >= lo[d])) {
             lo[d] = domain_.lo[d], hi[d] = domain_.hi[d];
@@ -160,7 +151,6 @@ void DemSolver::configure_grid() {
         }
     }
     grid_lo_ = lo, grid_hi_ = hi;
-    grid_.configure(lo, hi, radius, params_.dim, domain_.periodic);
 }
 
 void DemSolver::kick_drift(Real h) {
@@ -182,11 +172,7 @@ void DemSolver::kick_drift(Real h) {
 void DemSolver::step(Real h) {
     current_h_ = h;
     kick_drift(h);
-    walls_.advance(h);
-    for (auto& w : walls_.walls()) {
-        w.impulse += h * w.force; // force of the previous evaluation, held over the step
-        w.impulse_time += h;
-    }
+    advance_walls(h);
     if (drift_ > Real(0.5) * skin_ || walls_.layout() != walls_seen_) rebuild();
     if (obstacles_ && (obstacles_->version != obstacles_seen_ || builds_ != obstacle_builds_seen_))
         build_obstacle_slots();
@@ -195,6 +181,14 @@ void DemSolver::step(Real h) {
         forces(Real(0.5) * h);
     }
     evaluated_ = true;
+}
+
+void DemSolver::advance_walls(Real h) {
+    walls_.advance(h);
+    for (auto& w : walls_.walls()) {
+        w.impulse += h * w.force; // force of the previous evaluation, held over the step
+        w.impulse_time += h;
+    }
 }
 
 void DemSolver::build_obstacle_slots() {

@@ -3,6 +3,7 @@
 #include "debrisflow/dem/contact_slots.hpp"
 #include "debrisflow/dem/dem_params.hpp"
 #include "debrisflow/dem/fluid_load.hpp"
+#include "debrisflow/dem/grain_bounds_k.hpp"
 #include "debrisflow/dem/grain_contact_k.hpp"
 #include "debrisflow/dem/grain_own_pass_k.hpp"
 #include "debrisflow/dem/grain_set.hpp"
@@ -137,6 +138,10 @@ private:
     std::vector<Index> active_prims_;
     std::vector<PrimitiveBounds> active_bounds_;
     void configure_grid();
+    // The grid's box around the grains' box b: one search radius beyond it, the domain's
+    // length in periodic or empty directions (into grid_lo_, grid_hi_); and its cell edge.
+    void set_grid_box(Bounds b);
+    Real grid_cell() const { return 2 * max_radius_ + search_margin(); }
     // Copies positions, velocities, spins, radii, masses and materials into hot_.
     void refresh_hot();
     void kick_drift(Real h);
@@ -156,6 +161,11 @@ private:
     // per wall and obstacle slot, then summed per wall and per body (dem_slot_pass.cpp).
     SlotReport own_slots(Real half_kick, bool measure);
     std::vector<WallState> wall_states_;
+    // The walls' states as the per-grain pass reads them, refreshed from the WallSet.
+    const std::vector<WallState>& refresh_wall_states();
+    // Moves the walls by a step h and adds the force of the last evaluation, held over the
+    // step, to each wall's impulse.
+    void advance_walls(Real h);
     std::vector<Real> wall_out_, obstacle_out_;
     std::vector<std::uint8_t> wall_touching_, obstacle_touching_;
     // Candidate grain-obstacle pairs within reach (rebuilt when either side moved).

@@ -161,7 +161,7 @@ private:
         up_slots(wall_, host_.wall_slots_);
         rolling_ = host_.grain_slots_.rolling_;
         up(table_, host_.table_);
-        upload_walls(true);
+        upload_faces();
         // the grid's box as at the host's last rebuild (its periodic lengths give separations)
         if (host_.built_ && n_ > 0) configure(host_.grid_lo_, host_.grid_hi_);
         reverse_built_ = -1;
@@ -177,17 +177,12 @@ private:
 
     PairTable table() { return {table_.data(), int(host_.materials_.size()), host_.reach_ > 0}; }
 
-    // The walls' primitives (when they moved or changed) and states (every evaluation: they
-    // are few), from the host's WallSet.
-    void upload_walls(bool primitives) {
+    // The walls' faces, from the host's WallSet: at the take-over, at each rebuild and after
+    // the walls moved.
+    void upload_faces() {
         const auto& prims = host_.walls_.primitives();
-        if (primitives) prims_.upload(prims.data(), Index(prims.size()));
-        const auto& wl = host_.walls_.walls();
-        states_.resize(wl.size());
-        for (std::size_t w = 0; w < wl.size(); ++w)
-            states_[w] = {wl[w].velocity, wl[w].origin, wl[w].material, wl[w].active,
-                          wl[w].record_contacts};
-        wall_states_.upload(states_.data(), Index(states_.size()));
+        prims_.upload(prims.data(), Index(prims.size()));
+        faces_stale_ = false;
     }
 
     // --- the step (DemSolver::advance and step) ------------------------------------------
@@ -204,17 +199,10 @@ private:
     void step(Real h) {
         host_.current_h_ = h;
         kick_drift(h);
-        auto& walls = host_.walls_;
-        walls.advance(h);
-        for (auto& w : walls.walls()) {
-            w.impulse += h * w.force; // force of the previous evaluation, held over the step
-            w.impulse_time += h;
-        }
-        const bool moving = walls.max_speed() > 0;
-        if (host_.drift_ > Real(0.5) * host_.skin_ || walls.layout() != host_.walls_seen_)
+        host_.advance_walls(h);
+        faces_stale_ = faces_stale_ || host_.walls_.max_speed() > 0;
+        if (host_.drift_ > Real(0.5) * host_.skin_ || host_.walls_.layout() != host_.walls_seen_)
             rebuild();
-        else if (moving)
-            upload_walls(true);
         {
             ScopedTimer timer(t_forces_);
             forces(Real(0.5) * h);
@@ -250,7 +238,7 @@ private:
         build_slots(grain_,
                     GrainCandidates{grid_, pos_.data(), radius_.data(), id_.data(), nullptr, skin});
         // the active primitives and their boxes, few: on the host, then uploaded
-        upload_walls(true);
+        upload_faces();
         const auto& prims = host_.walls_.primitives();
         const auto& wl = host_.walls_.walls();
         active_host_.clear();
@@ -268,28 +256,16 @@ private:
         Space::synchronize();
     }
 
-    // Cells of one search radius over the grains' box (the whole length in periodic
-    // directions), as DemSolver::configure_grid.
+    // Cells of one search radius over the grains' box, as DemSolver::configure_grid.
     void configure_grid() {
-        const Domain& dom = host_.domain_;
         Bounds box = Space::template fold<Bounds>(n_, GrainBounds{pos_.data()});
-        Bounds::combine(box, Bounds{dom.hi, dom.lo}); // the host's fold starts there
-        Vec3 lo = box.lo, hi = box.hi;
-        const Real radius = 2 * host_.max_radius_ + host_.search_margin();
-        for (int d = 0; d < 3; ++d) {
-            if (dom.periodic[d] || !(hi[d] >= lo[d])) {
-                lo[d] = dom.lo[d], hi[d] = dom.hi[d];
-            } else {
-                lo[d] -= radius, hi[d] += radius;
-            }
-        }
-        host_.grid_lo_ = lo, host_.grid_hi_ = hi;
-        configure(lo, hi);
+        Bounds::combine(box, Bounds{host_.domain_.hi, host_.domain_.lo}); // the host's start
+        host_.set_grid_box(box);
+        configure(host_.grid_lo_, host_.grid_hi_);
     }
 
     void configure(Vec3 lo, Vec3 hi) {
-        config_.configure(lo, hi, 2 * host_.max_radius_ + host_.search_margin(), host_.params_.dim,
-                          host_.domain_.periodic);
+        config_.configure(lo, hi, host_.grid_cell(), host_.params_.dim, host_.domain_.periodic);
         grid_ = config_.view();
         keys_count_ = Index(config_.cell_count());
     }
@@ -389,7 +365,10 @@ private:
         const Real h = host_.current_h_;
         auto& wl = host_.walls_.walls();
         for (auto& w : wl) w.contacts.clear();
-        upload_walls(false);
+        // the walls' states (few: every evaluation) and their faces if they moved
+        if (faces_stale_) upload_faces();
+        const auto& states = host_.refresh_wall_states();
+        wall_states_.upload(states.data(), Index(states.size()));
         if (n_ == 0) {
             for (auto& w : wl) w.force = w.moment = {};
             host_.contacts_ = 0;
@@ -456,7 +435,7 @@ private:
 
     DemSolver& host_;
     GrainSet& g_;
-    bool resident_ = false, rolling_ = false;
+    bool resident_ = false, rolling_ = false, faces_stale_ = false;
     Index n_ = 0;
     // grains (GrainView's arrays), their contact pass's copy, their contact sums
     Buffer<Vec3> pos_, vel_, spin_, force_, torque_;
@@ -484,7 +463,6 @@ private:
     Buffer<WallState> wall_states_;
     Buffer<Index> active_;
     Buffer<PrimitiveBounds> bounds_;
-    std::vector<WallState> states_;
     std::vector<Index> active_host_;
     std::vector<PrimitiveBounds> bounds_host_;
     // reordering's scratch

@@ -1,7 +1,8 @@
 #pragma once
 // The small per-grain steps of the resident DEM loop (dem/resident_dem.hpp) that the host
 // solver does with its own containers: the contact pass's copy of the grain state, the grains'
-// bounding box, and the keys of the reverse index. Host/device functors.
+// bounding box (dem/grain_bounds_k.hpp), and the keys of the reverse index. Host/device functors.
+#include "debrisflow/dem/grain_bounds_k.hpp"
 #include "debrisflow/dem/grain_contact_k.hpp"
 #include "debrisflow/flow/outlet_box_k.hpp"
 #include <cstdint>
@@ -14,23 +15,6 @@ struct LoadHot {
     GrainView g;
     GrainState* hot;
     DF_HD void operator()(Index i) const { hot[i] = GrainState::load(g, i); }
-};
-
-// The box around a set of points (empty by default: the fold's identity).
-struct Bounds {
-    Vec3 lo{Real(1e300), Real(1e300), Real(1e300)}, hi{-Real(1e300), -Real(1e300), -Real(1e300)};
-    DF_HD static void combine(Bounds& a, const Bounds& b) {
-        for (int d = 0; d < 3; ++d) {
-            a.lo[d] = b.lo[d] < a.lo[d] ? b.lo[d] : a.lo[d];
-            a.hi[d] = b.hi[d] > a.hi[d] ? b.hi[d] : a.hi[d];
-        }
-    }
-};
-
-// Adds grain i's centre to the box (the grid's extent, DemSolver::configure_grid).
-struct GrainBounds {
-    const Vec3* pos;
-    DF_HD void operator()(Index i, Bounds& b) const { Bounds::combine(b, Bounds{pos[i], pos[i]}); }
 };
 
 // The reverse index's sort key of slot s = i * capacity + k: the partner it names, or n (after
@@ -63,7 +47,6 @@ struct GrainInside {
 
 static_assert(std::is_trivially_copyable_v<LoadHot>);
 static_assert(std::is_trivially_copyable_v<GrainInside>);
-static_assert(std::is_trivially_copyable_v<GrainBounds>);
 static_assert(std::is_trivially_copyable_v<SlotPartnerKey>);
 
 } // namespace debrisflow::dem
