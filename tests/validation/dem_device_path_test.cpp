@@ -27,6 +27,9 @@ struct State {
     std::map<std::pair<std::uint32_t, std::uint32_t>, Vec3> springs;
     test::ProbeHistories probes;
     long steps = 0, contacts = 0;
+    double particle_steps = 0;
+    flow::ExitTally left; // grains removed at the domain's faces
+    long copies_to_host = -1;
 };
 
 State run(const std::string& file, std::vector<std::string> sets, const std::string& pass,
@@ -40,6 +43,9 @@ State run(const std::string& file, std::vector<std::string> sets, const std::str
     const auto report = sim.run({"", true, 0, until});
     State s;
     s.steps = report.result.steps;
+    s.particle_steps = report.particle_steps;
+    s.left = report.grain_exit;
+    s.copies_to_host = report.dem_copies_to_host;
     auto& dem = sim.grains();
     s.contacts = dem.contacts();
     const auto& g = dem.grains();
@@ -127,13 +133,12 @@ void check(const std::string& file, const std::vector<std::string>& sets, Real u
 // in the same contact layout ("slots"): the same functors in the same order per grain, so
 // grains, springs and contacts agree bitwise; a wall's load is a sum over grains whose
 // partial sums the two loops split differently, so probes of wall loads agree to round-off.
-void check_resident(const std::string& file, const std::vector<std::string>& sets, Real until,
-                    double d, std::size_t* grains_at_end = nullptr) {
-    const State host = run(file, sets, "slots", until);
-    const State resident = run(file, sets, "slots", until, "host_resident");
-    if (grains_at_end) *grains_at_end = resident.grains.size();
+void check_same(const State& host, const State& resident, const std::string& file, double d) {
     ASSERT_EQ(host.steps, resident.steps);
     ASSERT_EQ(host.grains.size(), resident.grains.size());
+    EXPECT_EQ(host.particle_steps, resident.particle_steps);
+    EXPECT_EQ(host.left.count, resident.left.count);
+    EXPECT_EQ(host.left.mass, resident.left.mass);
     ASSERT_GT(host.contacts, 0);
     EXPECT_EQ(host.contacts, resident.contacts);
     ASSERT_EQ(host.probes.size(), resident.probes.size());
@@ -152,6 +157,15 @@ void check_resident(const std::string& file, const std::vector<std::string>& set
     EXPECT_EQ(x.f, 0);
     EXPECT_EQ(x.spring, 0);
     EXPECT_LE(x.probe, 1e-12); // wall loads: partial sums in another order
+}
+
+State check_resident(const std::string& file, const std::vector<std::string>& sets, Real until,
+                     double d, std::size_t* grains_at_end = nullptr) {
+    const State host = run(file, sets, "slots", until);
+    State resident = run(file, sets, "slots", until, "host_resident");
+    if (grains_at_end) *grains_at_end = resident.grains.size();
+    check_same(host, resident, file, d);
+    return resident;
 }
 
 } // namespace
@@ -269,12 +283,14 @@ TEST(DemResident, ColumnCollapseWithRollingMemory) {
     check_resident("cases/deposits/column_collapse2d.toml", {"time.end=0.3", "output.vtk=false"},
                    0.3, 0.005);
 }
-// A moving wall (its faces uploaded after every move) pushes discs along a floor and out of
-// the domain: grains that leave are removed on the host (the loop publishes, the host removes
-// and rebuilds, the loop takes the state over again), with the constant-torque rolling model.
-TEST(DemResident, PushedOffTheDomainByAMovingWall) {
-    const std::string file = test::write_temp_case("pushed_off", R"(
-name = "pushed_off"
+// A moving wall (its faces uploaded after every move) pushes discs along a floor, with the
+// constant-torque rolling model, out of the domain or into an outlet. Both remove grains where
+// they are (stream compaction of the grains and their slot rows, then a rebuild): only the
+// leavers' masses, materials and faces come to the host.
+std::string pushed_off_case(const std::string& name, const std::string& extra) {
+    return test::write_temp_case(name,
+                                 fmt::format(R"(
+name = "{name}"
 dimensions = 2
 [time]
 end = 0.25
@@ -313,23 +329,51 @@ material = "glass"
 packing = "lattice"
 diameter = 0.01
 gap = 0.05
-region = { shape = "box", min = [0.005, 0, 0], max = [0.15, 0, 0.04] }
+region = {{ shape = "box", min = [0.005, 0, 0], max = [0.15, 0, 0.04] }}
 [[probe]]
 name = "push"
 type = "wall_force"
 wall = "pusher"
 every = 0.005
+{extra})",
+                                             fmt::arg("name", name), fmt::arg("extra", extra)));
+}
+
+TEST(DemResident, PushedOffTheDomainByAMovingWall) {
+    const std::string file = pushed_off_case("pushed_off", R"(
 [[probe]]
 name = "energy"
 type = "kinetic_energy"
 min = [-0.02, 0, -0.02]
 max = [0.2, 0, 0.2]
 every = 0.005
+[[probe]]
+name = "left"
+type = "domain_exit"
+every = 0.005
 )");
     std::size_t at_start = 0, at_end = 0;
     check_resident(file, {"time.end=1e-6"}, 1e-6, 0.01, &at_start);
-    check_resident(file, {}, 0.25, 0.01, &at_end);
-    EXPECT_LT(at_end, at_start); // some left, and were removed
+    const State s = check_resident(file, {}, 0.25, 0.01, &at_end);
+    EXPECT_LT(at_end, at_start);                         // some left, and were removed
+    EXPECT_EQ(s.left.count[1], long(at_start - at_end)); // through x+
+}
+
+TEST(DemResident, PushedIntoAnOutlet) {
+    const std::string file = pushed_off_case("pushed_into_outlet", R"(
+[[outlet]]
+name = "sink"
+min = [0.185, -0.05, -0.05]
+max = [0.3, 0.05, 0.3]
+every = 0.005
+)");
+    std::size_t at_start = 0, at_end = 0;
+    check_resident(file, {"time.end=1e-6"}, 1e-6, 0.01, &at_start);
+    const State s = check_resident(file, {}, 0.25, 0.01, &at_end);
+    EXPECT_LT(at_end, at_start);
+    EXPECT_EQ(s.left.total_count(), 0); // the outlet took them first
+    // no probe reads the grains in the run: the one copy to the host is the end's
+    EXPECT_EQ(s.copies_to_host, 1);
 }
 // A hopper feed releasing grains onto baffles (structures of boxes): each release copies the
 // grains to the host, where the new ones are placed, and back.

@@ -269,13 +269,9 @@ RunReport Simulation::run(const RunOptions& opt) {
                     out->tally_fluid(resident_->remove_fluid_inside(out->box()).mass);
                     out->apply(nullptr, nullptr, rigid_.get());
                 } else if (resident_dem_) {
-                    // grains inside are looked for where they are; the rare removal runs on
-                    // the host between a publish and a reload
-                    if (resident_dem_->any_inside(out->box())) {
-                        resident_dem_->publish();
-                        out->apply(nullptr, dem_.get(), nullptr);
-                        resident_dem_->reload();
-                    }
+                    // the grains inside removed where they are
+                    const auto left = resident_dem_->remove_inside(out->box());
+                    out->tally_grains(left.mass, left.material, dem_->materials());
                 } else
                     out->apply(solver_.get(), dem_.get(), rigid_.get());
                 if (out->bodies_removed() > before)
@@ -302,11 +298,15 @@ RunReport Simulation::run(const RunOptions& opt) {
                 return;
             }
             if (resident_dem_) {
-                // grains that left are rare: removed on the host, then taken over again
+                // the drift flags a step after which a grain may be outside: then the leavers
+                // are removed where they are
                 if (!dem_->may_have_left()) return;
-                resident_dem_->publish();
-                const std::string note = domain_exit_.apply(nullptr, dem_.get(), s.t);
-                resident_dem_->reload();
+                const auto left = resident_dem_->remove_outside(domain_exit_.faces());
+                if (left.mass.empty()) return;
+                std::vector<flow::DomainExit::Leaver> leavers;
+                for (std::size_t k = 0; k < left.face.size(); ++k)
+                    leavers.push_back({left.face[k], left.mass[k]});
+                const std::string note = domain_exit_.tally_grains(leavers, left.mass_in_set, s.t);
                 if (!note.empty()) log_.line(note);
                 return;
             }
@@ -343,7 +343,8 @@ RunReport Simulation::run(const RunOptions& opt) {
         [&](const time::StepInfo& s) {
             if (s.step > 0)
                 particle_steps += double((resident_ ? resident_->size() : set_.size()) +
-                                         grains_.size() + (fem_ ? fem_->nodes() : 0));
+                                         (resident_dem_ ? resident_dem_->size() : grains_.size()) +
+                                         (fem_ ? fem_->nodes() : 0));
         },
         false);
     const auto wall0 = std::chrono::steady_clock::now();

@@ -4,6 +4,7 @@
 #include "debrisflow/dem/critical_dt.hpp"
 #include "debrisflow/dem/grain_contact_k.hpp"
 #include "debrisflow/dem/grain_kick_drift_k.hpp"
+#include "debrisflow/dem/resident_dem_k.hpp"
 #include "debrisflow/dem/rolling_models_k.hpp"
 #include "debrisflow/dem/slot_candidates_k.hpp"
 #include "debrisflow/exec/parallel.hpp"
@@ -285,15 +286,7 @@ Real DemSolver::unbalanced_ratio() const {
 }
 
 bool DemSolver::escaped(Index i) const {
-    const std::size_t k = std::size_t(i);
-    const Vec3 p = grains_.pos[k], v = grains_.vel[k];
-    const bool nan = !std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) ||
-                     !std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z);
-    bool out = false;
-    for (int d = 0; d < 3; ++d)
-        if (!(params_.dim == 2 && d == 1) && !domain_.periodic[d])
-            out = out || !(p[d] >= domain_.lo[d] && p[d] <= domain_.hi[d]);
-    return nan || out;
+    return GrainEscaped{grains_.pos.data(), grains_.vel.data(), domain_, params_.dim == 2}(i);
 }
 
 void DemSolver::check_health(Real t) const {

@@ -13,14 +13,17 @@
 // wall's load and the contact count. The host's DemSolver keeps the parameters, the walls
 // (moved on the host and uploaded when they move), the step and the counters; its grains and
 // slots are brought up to date by publish() (probes that read grains, frames, checkpoints, the
-// end, grains leaving the domain). Written once; dem/resident_dem_host.cpp instantiates it for
-// the host's threads (what CI runs), exec/cuda_instantiations.cu for a CUDA device.
+// end, grain feeds). Grains that leave (outlets, the domain exit) are removed here by stream
+// compaction; only their masses, materials and faces come back. Written once;
+// dem/resident_dem_host.cpp instantiates it for the host's threads (what CI runs),
+// exec/cuda_instantiations.cu for a CUDA device.
 #include "debrisflow/core/stopwatch.hpp"
 #include "debrisflow/dem/dem_solver.hpp"
 #include "debrisflow/dem/grain_kick_drift_k.hpp"
 #include "debrisflow/dem/resident_dem_backend.hpp"
 #include "debrisflow/dem/resident_dem_k.hpp"
 #include "debrisflow/dem/slot_candidates_k.hpp"
+#include "debrisflow/exec/compact_k.hpp"
 #include "debrisflow/exec/reorder_k.hpp"
 #include "debrisflow/neighbors/cell_keys_k.hpp"
 #include <cmath>
@@ -113,9 +116,20 @@ public:
 
     void reload() override { resident_ = false; }
 
-    bool any_inside(const flow::OutletBox& box) override {
+    Index size() const override { return resident_ ? n_ : g_.size(); }
+
+    Leaving remove_outside(const flow::ExitFaces& faces) override {
         upload_once();
-        return Space::first_where(n_, GrainInside{pos_.data(), box}) < n_;
+        keep_.resize(n_);
+        Space::for_each(n_, GrainKeepInsideDomain{pos_.data(), faces, keep_.data()});
+        return remove_leavers(&faces);
+    }
+
+    Leaving remove_inside(const flow::OutletBox& box) override {
+        upload_once();
+        keep_.resize(n_);
+        Space::for_each(n_, GrainKeepOutsideBox{pos_.data(), box, keep_.data()});
+        return remove_leavers(nullptr);
     }
 
     std::size_t memory_bytes() const override {
@@ -128,7 +142,8 @@ public:
                         keys_.bytes() + order_.bytes() + start_cells_.bytes() + table_.bytes() +
                         prims_.bytes() + wall_states_.bytes() + active_.bytes() + bounds_.bytes() +
                         vec_scratch_.bytes() + real_scratch_.bytes() + index_scratch_.bytes() +
-                        key_scratch_.bytes() + byte_scratch_.bytes();
+                        key_scratch_.bytes() + byte_scratch_.bytes() + keep_.bytes() +
+                        leave_.bytes() + at_.bytes();
         return b + sorter_.bytes() + reverse_sorter_.bytes();
     }
     long copies_to_host() const override { return copies_to_host_; }
@@ -167,6 +182,48 @@ private:
         reverse_built_ = -1;
         resident_ = true;
         ++copies_from_host_;
+    }
+
+    // --- grains that leave (DemSolver::remove_grains) --------------------------------------
+    // The leavers (keep_[i] = 0) reported in index order; the others kept in their order with
+    // their slot rows (the history the rebuild carries, keyed by the partners' ids), then the
+    // neighbour rebuild, as on the host.
+    Leaving remove_leavers(const flow::ExitFaces* faces) {
+        Leaving out;
+        if (Space::first_where(n_, exec::Dropped{keep_.data()}) == n_) return out; // none
+        if (faces) out.mass_in_set = Space::sum_of(n_, GrainMass{mass_.data()});
+        leave_.resize(n_);
+        at_.resize(n_);
+        Space::for_each(n_, exec::Complement{keep_.data(), leave_.data()});
+        const Index gone = Space::exclusive_scan(n_, leave_.data(), at_.data());
+        out.mass = leavers_of(mass_, gone);
+        out.material = leavers_of(material_, gone);
+        if (faces) {
+            Buffer<int> picked;
+            picked.resize(gone);
+            Space::for_each(n_, GrainLeaverFaces{pos_.data(), *faces, leave_.data(), at_.data(),
+                                                 picked.data()});
+            out.face.resize(std::size_t(gone));
+            picked.download(out.face.data());
+        }
+        const Index kept = Space::exclusive_scan(n_, keep_.data(), at_.data());
+        order_.resize(kept);
+        Space::for_each(n_, exec::KeptOrder{keep_.data(), at_.data(), order_.data()});
+        permute(kept);
+        host_.evaluated_ = false;
+        const GrainEscaped escaped{pos_.data(), vel_.data(), host_.domain_, host_.params_.dim == 2};
+        host_.bad_ = Space::first_where(n_, escaped) < n_;
+        rebuild();
+        return out;
+    }
+    template <class T> std::vector<T> leavers_of(const Buffer<T>& values, Index gone) {
+        Buffer<T> picked;
+        picked.resize(gone);
+        Space::for_each(
+            n_, exec::ScatterKept<T>{values.data(), leave_.data(), at_.data(), picked.data(), 1});
+        std::vector<T> out(static_cast<std::size_t>(gone));
+        picked.download(out.data());
+        return out;
     }
 
     GrainView view() {
@@ -230,7 +287,7 @@ private:
         configure_grid();
         build_grid();
         if (host_.params_.reorder) {
-            permute();
+            permute(n_);
             build_grid();
         }
         Space::for_each(n_, LoadHot{view(), hot_.data()});
@@ -283,15 +340,18 @@ private:
         grid_.order = order_.data();
     }
 
-    // Every grain array and both kinds of slot rows gathered into the grid's order (the
-    // slots' partners are rebuilt right after; their keys and history move with their rows).
-    void permute() {
+    // Every grain array and both kinds of slot rows gathered into order_ (the grid's order, or
+    // the kept grains after a removal), m of them (the slots' partners are rebuilt right after;
+    // their keys and history move with their rows).
+    void permute(Index m) {
+        const Index held = n_;
+        n_ = m;
         for (auto* a : {&pos_, &vel_, &spin_, &force_, &torque_}) gather(*a, vec_scratch_, 1);
         for (auto* a : {&radius_, &mass_, &inv_mass_, &inv_inertia_}) gather(*a, real_scratch_, 1);
         gather(material_, byte_scratch_, 1);
         gather(id_, key_scratch_, 1);
         for (Slots* s : {&grain_, &wall_}) {
-            if (s->count.size() != n_) continue; // never built: nothing to carry
+            if (s->count.size() != held) continue; // never built: nothing to carry
             const int cap = int(s->cap);
             gather(s->count, index_scratch_, 1);
             gather(s->key, key_scratch_, cap);
@@ -471,6 +531,8 @@ private:
     Buffer<Index> index_scratch_;
     Buffer<std::uint32_t> key_scratch_;
     Buffer<std::uint8_t> byte_scratch_;
+    // removal: the keep flags, the leavers' flags, their exclusive scan
+    Buffer<Index> keep_, leave_, at_;
     long copies_to_host_ = 0, copies_from_host_ = 0;
     double t_neighbors_ = 0, t_forces_ = 0, t_integration_ = 0;
 };

@@ -3,11 +3,14 @@
 // (sph/resident_backend.hpp): "host" is the DemSolver's own loops; "host_resident" the resident
 // loop (dem/resident_dem.hpp) in the host's memory, the device's code path run where there is
 // no GPU (CI); "cuda" the same loop in a CUDA device's memory.
+#include "debrisflow/flow/exit_faces_k.hpp"
 #include "debrisflow/flow/outlet_box_k.hpp"
 #include "debrisflow/time/phase.hpp"
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace debrisflow::dem {
 
@@ -24,11 +27,22 @@ public:
     virtual long copies_to_host() const = 0;
     virtual long copies_from_host() const = 0;
     // The host's DemSolver changed the grains or their slots (a checkpoint restored, grains
-    // that left the domain removed there after a publish): take its state over again.
+    // fed in there after a publish): take its state over again.
     virtual void reload() = 0;
-    // Whether some grain's centre is inside an outlet's box (looked for where the grains are;
-    // the rare removal itself runs on the host between a publish and a reload).
-    virtual bool any_inside(const flow::OutletBox& box) = 0;
+    // Grains held now (the host's GrainSet is brought up to date only by publish()).
+    virtual Index size() const = 0;
+    // Grains that left, removed where they are (index order): their masses and materials, the
+    // faces they crossed (the domain exit only) and the mass held before (the same).
+    struct Leaving {
+        std::vector<int> face;
+        std::vector<Real> mass;
+        std::vector<std::uint8_t> material;
+        Real mass_in_set = 0;
+    };
+    // Removes the grains whose finite centre left the domain (domain.exit = "remove").
+    virtual Leaving remove_outside(const flow::ExitFaces& faces) = 0;
+    // Removes the grains whose centre is inside an outlet's box.
+    virtual Leaving remove_inside(const flow::OutletBox& box) = 0;
 };
 
 // How `check` and the log name where the DEM phase runs on `backend`.

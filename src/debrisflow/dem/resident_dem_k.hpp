@@ -1,10 +1,14 @@
 #pragma once
 // The small per-grain steps of the resident DEM loop (dem/resident_dem.hpp) that the host
 // solver does with its own containers: the contact pass's copy of the grain state, the grains'
-// bounding box (dem/grain_bounds_k.hpp), and the keys of the reverse index. Host/device functors.
+// bounding box (dem/grain_bounds_k.hpp), the keys of the reverse index, and the flags of the
+// grains that leave (outlets, the domain exit). Host/device functors.
+#include "debrisflow/core/domain.hpp"
 #include "debrisflow/dem/grain_bounds_k.hpp"
 #include "debrisflow/dem/grain_contact_k.hpp"
+#include "debrisflow/flow/exit_faces_k.hpp"
 #include "debrisflow/flow/outlet_box_k.hpp"
+#include <cmath>
 #include <cstdint>
 #include <type_traits>
 
@@ -38,15 +42,64 @@ template <class T> struct FillWith {
     DF_HD void operator()(Index i) const { a[i] = value; }
 };
 
-// Whether grain i's centre is inside an outlet's box.
-struct GrainInside {
+// keep[i] = 0 for the grains whose centre is inside an outlet's box, 1 otherwise.
+struct GrainKeepOutsideBox {
     const Vec3* pos;
     flow::OutletBox box;
-    DF_HD bool operator()(Index i) const { return box.contains(pos[i]); }
+    Index* keep;
+    DF_HD void operator()(Index i) const { keep[i] = !box.contains(pos[i]); }
+};
+
+// keep[i] = 0 for the grains whose (finite) centre left the domain, 1 for the others (a grain
+// that is not finite stays for the health check to name).
+struct GrainKeepInsideDomain {
+    const Vec3* pos;
+    flow::ExitFaces faces;
+    Index* keep;
+    DF_HD void operator()(Index i) const { keep[i] = faces.of_finite(pos[i]) < 0; }
+};
+
+// out[at[i]] = the face leaver i crossed, for the grains with leave[i] (`at` the exclusive
+// scan of leave).
+struct GrainLeaverFaces {
+    const Vec3* pos;
+    flow::ExitFaces faces;
+    const Index* leave;
+    const Index* at;
+    int* out;
+    DF_HD void operator()(Index i) const {
+        if (leave[i]) out[at[i]] = faces.of_finite(pos[i]);
+    }
+};
+
+// Whether grain i is not finite or its centre is outside a closed side of the domain (y does
+// not count in 2D): what the health check stops at (DemSolver::escaped).
+struct GrainEscaped {
+    const Vec3 *pos, *vel;
+    Domain dom;
+    bool plane;
+    DF_HD bool operator()(Index i) const {
+        const Vec3 p = pos[i], v = vel[i];
+        bool bad = !(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) &&
+                     std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z));
+        for (int d = 0; d < 3; ++d)
+            if (!(plane && d == 1) && !dom.periodic[d])
+                bad = bad || !(p[d] >= dom.lo[d] && p[d] <= dom.hi[d]);
+        return bad;
+    }
+};
+
+// The mass of grain i (the sum over the grains: the mass the set holds).
+struct GrainMass {
+    const Real* mass;
+    DF_HD Real operator()(Index i) const { return mass[i]; }
 };
 
 static_assert(std::is_trivially_copyable_v<LoadHot>);
-static_assert(std::is_trivially_copyable_v<GrainInside>);
+static_assert(std::is_trivially_copyable_v<GrainKeepOutsideBox>);
+static_assert(std::is_trivially_copyable_v<GrainKeepInsideDomain>);
+static_assert(std::is_trivially_copyable_v<GrainLeaverFaces>);
+static_assert(std::is_trivially_copyable_v<GrainEscaped>);
 static_assert(std::is_trivially_copyable_v<SlotPartnerKey>);
 
 } // namespace debrisflow::dem

@@ -27,14 +27,23 @@ int DomainExit::face_of(Vec3 p) const {
 }
 
 std::string DomainExit::tally_fluid(const std::vector<Leaver>& leavers, Real mass_in_set, Real t) {
-    const auto before = fluid_.count;
-    const Real held = fluid_.total_mass() + mass_in_set; // lost before + in the set
+    return tally("fluid particles", dim_ == 2 ? "kg/m" : "kg", fluid_, fluid_warned_, leavers,
+                 mass_in_set, t);
+}
+
+std::string DomainExit::tally_grains(const std::vector<Leaver>& leavers, Real mass_in_set, Real t) {
+    return tally("grains", "kg", grains_, grains_warned_, leavers, mass_in_set, t);
+}
+
+std::string DomainExit::tally(const char* phase, const char* unit, ExitTally& into, bool& warned,
+                              const std::vector<Leaver>& leavers, Real mass_in_set, Real t) {
+    const auto before = into.count;
+    const Real held = into.total_mass() + mass_in_set; // lost before + in the set
     for (const Leaver& l : leavers) {
-        ++fluid_.count[std::size_t(l.face)];
-        fluid_.mass[std::size_t(l.face)] += l.mass;
+        ++into.count[std::size_t(l.face)];
+        into.mass[std::size_t(l.face)] += l.mass;
     }
-    return note("fluid particles", dim_ == 2 ? "kg/m" : "kg", fluid_, before, held, fluid_warned_,
-                t);
+    return note(phase, unit, into, before, held, warned, t);
 }
 
 std::string DomainExit::note(const char* phase, const char* unit, ExitTally& tally,
@@ -96,14 +105,13 @@ std::string DomainExit::apply(sph::SphSolver* fluid, dem::DemSolver* grains, Rea
     if (grains && grains->may_have_left()) {
         auto& g = grains->grains();
         const Index n = g.size();
-        const auto before = grains_.count;
         std::vector<std::uint8_t> keep(std::size_t(n), 1);
-        Real held = grains_.total_mass(); // all the grains ever held: lost before + in the set
+        Real mass_in_set = 0;
         bool any = false;
         std::vector<int> face(std::size_t(n), -1);
         for (Index i = 0; i < n; ++i) {
             const std::size_t k = std::size_t(i);
-            held += g.mass[k];
+            mass_in_set += g.mass[k];
             face[k] = finite(g.pos[k]) ? face_of(g.pos[k]) : -1;
             if (face[k] < 0) continue;
             keep[k] = 0;
@@ -128,16 +136,14 @@ std::string DomainExit::apply(sph::SphSolver* fluid, dem::DemSolver* grains, Rea
                     }
                 }
             }
+            std::vector<Leaver> leavers;
             for (Index i = 0; i < n; ++i) {
                 const std::size_t k = std::size_t(i);
-                if (keep[k]) continue;
-                const int f = face[k];
-                if (f < 0) continue; // not finite: its clump goes, the health check speaks
-                ++grains_.count[std::size_t(f)];
-                grains_.mass[std::size_t(f)] += g.mass[k];
+                // not finite: its clump goes, the health check speaks
+                if (!keep[k] && face[k] >= 0) leavers.push_back({face[k], g.mass[k]});
             }
             grains->remove_grains(keep);
-            join(note("grains", "kg", grains_, before, held, grains_warned_, t));
+            join(tally_grains(leavers, mass_in_set, t));
         }
     }
     return log;

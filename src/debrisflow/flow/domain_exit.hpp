@@ -52,7 +52,7 @@ public:
     int face_of(Vec3 p) const;
     ExitFaces faces() const { return {domain_, dim_}; }
 
-    // One fluid particle that left: the face it crossed and its mass.
+    // One fluid particle or grain that left: the face it crossed and its mass.
     struct Leaver {
         int face;
         Real mass;
@@ -61,8 +61,12 @@ public:
     // before they were removed; the log lines as apply's. The resident SPH loop finds and
     // removes its leavers itself and reports them here.
     std::string tally_fluid(const std::vector<Leaver>& leavers, Real mass_in_set, Real t);
+    // The same for grains (the resident DEM loop's leavers; their masses in kg).
+    std::string tally_grains(const std::vector<Leaver>& leavers, Real mass_in_set, Real t);
 
 private:
+    std::string tally(const char* phase, const char* unit, ExitTally& into, bool& warned,
+                      const std::vector<Leaver>& leavers, Real mass_in_set, Real t);
     std::string note(const char* phase, const char* unit, ExitTally& tally,
                      const std::array<long, 6>& before, Real held, bool& warned, Real t) const;
     io::DomainExitSpec spec_;

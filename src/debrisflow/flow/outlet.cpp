@@ -12,6 +12,16 @@ void Outlet::tally_fluid(const std::vector<Real>& masses) {
     }
 }
 
+void Outlet::tally_grains(const std::vector<Real>& masses,
+                          const std::vector<std::uint8_t>& materials,
+                          const std::vector<dem::Material>& mats) {
+    for (std::size_t k = 0; k < masses.size(); ++k) {
+        grain_mass_ += masses[k];
+        grain_volume_ += masses[k] / mats[materials[k]].density;
+        ++grains_removed_;
+    }
+}
+
 void Outlet::apply(sph::SphSolver* fluid, dem::DemSolver* grains, rigid::BodySolver* bodies) {
     if (fluid) {
         auto& s = fluid->particles();
@@ -30,7 +40,6 @@ void Outlet::apply(sph::SphSolver* fluid, dem::DemSolver* grains, rigid::BodySol
     }
     if (grains) {
         auto& g = grains->grains();
-        const auto& mats = grains->materials();
         const Index n = g.size();
         std::vector<std::uint8_t> keep(std::size_t(n), 1);
         bool any = false;
@@ -42,12 +51,14 @@ void Outlet::apply(sph::SphSolver* fluid, dem::DemSolver* grains, rigid::BodySol
         }
         if (any) {
             grains->expand_to_clumps(keep); // a clump with a member inside leaves whole
+            std::vector<Real> masses;
+            std::vector<std::uint8_t> materials;
             for (Index i = 0; i < n; ++i) {
                 if (keep[std::size_t(i)]) continue;
-                grain_mass_ += g.mass[std::size_t(i)];
-                grain_volume_ += g.mass[std::size_t(i)] / mats[g.material[std::size_t(i)]].density;
-                ++grains_removed_;
+                masses.push_back(g.mass[std::size_t(i)]);
+                materials.push_back(g.material[std::size_t(i)]);
             }
+            tally_grains(masses, materials, grains->materials());
             grains->remove_grains(keep);
         }
     }

@@ -1,6 +1,7 @@
 #pragma once
 #include "debrisflow/flow/outlet_box_k.hpp"
 #include "debrisflow/io/case_spec.hpp"
+#include <cstdint>
 #include <vector>
 
 namespace debrisflow::sph {
@@ -34,6 +35,10 @@ public:
     // Counts fluid removed elsewhere (a resident phase's, in its index order): the masses of
     // the particles that were inside.
     void tally_fluid(const std::vector<Real>& masses);
+    // Counts grains removed (here or by a resident phase, in index order): their masses and
+    // materials, the volume at each material's density.
+    void tally_grains(const std::vector<Real>& masses, const std::vector<std::uint8_t>& materials,
+                      const std::vector<dem::Material>& mats);
     OutletBox box() const { return {spec_.min, spec_.max}; }
 
     const std::string& name() const { return spec_.name; }

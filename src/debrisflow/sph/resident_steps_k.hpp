@@ -2,7 +2,8 @@
 // The small per-item steps of the resident SPH loop (sph/resident_sph.hpp) that the host
 // solver does with its own containers: the grid's cell starts, reordering, compaction, and the
 // predicates its reductions look for (the grid's cell starts and gathering by order are
-// exec/reorder_k.hpp's). Host/device functors.
+// exec/reorder_k.hpp's, the compaction's scatter exec/compact_k.hpp's). Host/device functors.
+#include "debrisflow/exec/compact_k.hpp"
 #include "debrisflow/exec/reorder_k.hpp"
 #include "debrisflow/flow/exit_faces_k.hpp"
 #include "debrisflow/flow/outlet_box_k.hpp"
@@ -14,23 +15,11 @@
 namespace debrisflow::sph {
 
 using exec::CellStarts;
+using exec::Complement;
+using exec::Dropped;
 using exec::GatherByOrder;
 using exec::OutOfOrder;
-
-// out[at[i]] = in[i] for the items with keep[i] (stream compaction, `at` the exclusive scan
-// of keep), `width` values per item.
-template <class T> struct ScatterKept {
-    const T* in;
-    const Index* keep;
-    const Index* at;
-    T* out;
-    int width;
-    DF_HD void operator()(Index i) const {
-        if (!keep[i]) return;
-        const std::size_t to = std::size_t(at[i]) * width, from = std::size_t(i) * width;
-        for (int k = 0; k < width; ++k) out[to + k] = in[from + k];
-    }
-};
+using exec::ScatterKept;
 
 // Gathers and scatters of a narrow array through a wider carrier array (a scratch of another
 // type): item i's bytes are copied into the carrier's slot, then back (FromCarrier).
@@ -104,19 +93,6 @@ struct KeepOutsideBox {
     flow::OutletBox box;
     Index* keep;
     DF_HD void operator()(Index i) const { keep[i] = !(pv.is_fluid(i) && box.contains(pv.pos(i))); }
-};
-
-// Whether item i is dropped (keep[i] = 0).
-struct Dropped {
-    const Index* keep;
-    DF_HD bool operator()(Index i) const { return keep[i] == 0; }
-};
-
-// out[i] = 1 - keep[i].
-struct Complement {
-    const Index* keep;
-    Index* out;
-    DF_HD void operator()(Index i) const { out[i] = 1 - keep[i]; }
 };
 
 // The mass of fluid particle i (0 for walls).
