@@ -250,14 +250,10 @@ RunReport Simulation::run(const RunOptions& opt) {
                 }
             }
             for (auto& f : feeds_) {
-                if (resident_dem_ && f->due(s.t, s.dt)) {
-                    // grains are placed by the host among the grains near the region
-                    resident_dem_->publish();
+                if (resident_dem_)
+                    f->apply(*resident_dem_, *dem_, s.t, s.dt); // where the grains are
+                else
                     f->apply(*dem_, s.t, s.dt);
-                    resident_dem_->reload();
-                } else {
-                    f->apply(*dem_, s.t, s.dt); // adds to the debt only
-                }
             }
             for (auto& f : rock_feeds_)
                 f->apply(*rigid_, dem_ ? &grains_ : nullptr, probe_context().fluid, s.t, s.dt);

@@ -49,6 +49,15 @@ public:
     Real total_mass() const;
     // The id the next grain added will get (ids are 0, 1, 2 ... in order of addition).
     std::uint32_t next_id() const { return next_id_; }
+    // An empty set whose grains get the ids that `from` would give next (grains added for a
+    // resident loop, which holds the set's grains elsewhere).
+    static GrainSet continuing(const GrainSet& from) {
+        GrainSet s;
+        s.next_id_ = from.next_id_;
+        return s;
+    }
+    // Ids below `next` are taken (given by a set made with continuing()).
+    void reserve_ids(std::uint32_t next) { next_id_ = next_id_ < next ? next : next_id_; }
     // Saves or restores every array, the clumps and the next id (dem/dem_checkpoint.cpp).
     void state(checkpoint::Archive& ar);
 

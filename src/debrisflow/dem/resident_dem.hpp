@@ -13,8 +13,9 @@
 // wall's load and the contact count. The host's DemSolver keeps the parameters, the walls
 // (moved on the host and uploaded when they move), the step and the counters; its grains and
 // slots are brought up to date by publish() (probes that read grains, frames, checkpoints, the
-// end, grain feeds). Grains that leave (outlets, the domain exit) are removed here by stream
-// compaction; only their masses, materials and faces come back. Written once;
+// end). Grains that leave (outlets, the domain exit) are removed here by stream compaction, only
+// their masses, materials and faces coming back; a feed's new grains are placed on the host
+// clear of the few grains near its region (brought back) and appended here. Written once;
 // dem/resident_dem_host.cpp instantiates it for the host's threads (what CI runs),
 // exec/cuda_instantiations.cu for a CUDA device.
 #include "debrisflow/core/stopwatch.hpp"
@@ -27,6 +28,7 @@
 #include "debrisflow/exec/reorder_k.hpp"
 #include "debrisflow/neighbors/cell_keys_k.hpp"
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace debrisflow::dem {
@@ -118,6 +120,49 @@ public:
 
     Index size() const override { return resident_ ? n_ : g_.size(); }
 
+    std::vector<std::pair<Vec3, Real>> grains_near(const flow::FeedReach& region) override {
+        upload_once();
+        keep_.resize(n_);
+        at_.resize(n_);
+        Space::for_each(n_, GrainNearFeed{pos_.data(), radius_.data(), region, keep_.data()});
+        const Index m = Space::exclusive_scan(n_, keep_.data(), at_.data());
+        const std::vector<Vec3> p = picked(pos_, keep_, m);
+        const std::vector<Real> r = picked(radius_, keep_, m);
+        std::vector<std::pair<Vec3, Real>> near(p.size());
+        for (std::size_t k = 0; k < p.size(); ++k) near[k] = {p[k], r[k]};
+        return near;
+    }
+
+    void append(const GrainSet& fresh) override {
+        upload_once();
+        const Index m = fresh.size(), held = n_;
+        if (m == 0) return;
+        const auto tail = [&](auto& to, const auto& from) {
+            to.resize(held + m);
+            to.upload_at(held, from.data(), m);
+        };
+        tail(pos_, fresh.pos), tail(vel_, fresh.vel), tail(spin_, fresh.spin);
+        tail(force_, fresh.force), tail(torque_, fresh.torque), tail(radius_, fresh.radius);
+        tail(mass_, fresh.mass), tail(inv_mass_, fresh.inv_mass);
+        tail(inv_inertia_, fresh.inv_inertia), tail(material_, fresh.material);
+        tail(id_, fresh.id);
+        for (Slots* s : {&grain_, &wall_}) {
+            if (s->count.size() != held) continue; // never built: nothing to carry
+            const Index slots = (held + m) * s->cap;
+            s->count.resize(held + m);
+            Space::for_each(m, FillWith<Index>{s->count.data() + held, 0}); // empty rows
+            s->partner.resize(slots);
+            s->key.resize(slots);
+            s->xi.resize(slots);
+            if (s->mroll.size() > 0) s->mroll.resize(slots);
+        }
+        n_ = held + m;
+        hot_.resize(n_); // filled by the rebuild
+        host_.include_sizes(fresh);
+        host_.evaluated_ = false;
+        rebuild();
+    }
+
     Leaving remove_outside(const flow::ExitFaces& faces) override {
         upload_once();
         keep_.resize(n_);
@@ -196,8 +241,8 @@ private:
         at_.resize(n_);
         Space::for_each(n_, exec::Complement{keep_.data(), leave_.data()});
         const Index gone = Space::exclusive_scan(n_, leave_.data(), at_.data());
-        out.mass = leavers_of(mass_, gone);
-        out.material = leavers_of(material_, gone);
+        out.mass = picked(mass_, leave_, gone);
+        out.material = picked(material_, leave_, gone);
         if (faces) {
             Buffer<int> picked;
             picked.resize(gone);
@@ -216,14 +261,16 @@ private:
         rebuild();
         return out;
     }
-    template <class T> std::vector<T> leavers_of(const Buffer<T>& values, Index gone) {
-        Buffer<T> picked;
-        picked.resize(gone);
+    // values[i] of the m items with flags[i], in index order (at_ holds the flags' scan).
+    template <class T>
+    std::vector<T> picked(const Buffer<T>& values, const Buffer<Index>& flags, Index m) {
+        Buffer<T> out;
+        out.resize(m);
         Space::for_each(
-            n_, exec::ScatterKept<T>{values.data(), leave_.data(), at_.data(), picked.data(), 1});
-        std::vector<T> out(static_cast<std::size_t>(gone));
-        picked.download(out.data());
-        return out;
+            n_, exec::ScatterKept<T>{values.data(), flags.data(), at_.data(), out.data(), 1});
+        std::vector<T> host(static_cast<std::size_t>(m));
+        out.download(host.data());
+        return host;
     }
 
     GrainView view() {

@@ -3,13 +3,16 @@
 // (sph/resident_backend.hpp): "host" is the DemSolver's own loops; "host_resident" the resident
 // loop (dem/resident_dem.hpp) in the host's memory, the device's code path run where there is
 // no GPU (CI); "cuda" the same loop in a CUDA device's memory.
+#include "debrisflow/dem/grain_set.hpp"
 #include "debrisflow/flow/exit_faces_k.hpp"
+#include "debrisflow/flow/feed_reach_k.hpp"
 #include "debrisflow/flow/outlet_box_k.hpp"
 #include "debrisflow/time/phase.hpp"
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace debrisflow::dem {
@@ -26,8 +29,8 @@ public:
     // Times the grains were copied to the host (publish) and from it (reload).
     virtual long copies_to_host() const = 0;
     virtual long copies_from_host() const = 0;
-    // The host's DemSolver changed the grains or their slots (a checkpoint restored, grains
-    // fed in there after a publish): take its state over again.
+    // The host's DemSolver changed the grains or their slots (a checkpoint restored): take its
+    // state over again.
     virtual void reload() = 0;
     // Grains held now (the host's GrainSet is brought up to date only by publish()).
     virtual Index size() const = 0;
@@ -43,6 +46,13 @@ public:
     virtual Leaving remove_outside(const flow::ExitFaces& faces) = 0;
     // Removes the grains whose centre is inside an outlet's box.
     virtual Leaving remove_inside(const flow::OutletBox& box) = 0;
+    // The positions and radii of the grains near a feed's region (FeedReach::near), in index
+    // order: the few a new grain must keep clear of.
+    virtual std::vector<std::pair<Vec3, Real>> grains_near(const flow::FeedReach& region) = 0;
+    // Appends grains (a feed's, ids from GrainSet::continuing) after the last, as
+    // DemSolver::grains_added: empty slot rows, the search margin and step widened for their
+    // sizes, a neighbour rebuild.
+    virtual void append(const GrainSet& fresh) = 0;
 };
 
 // How `check` and the log name where the DEM phase runs on `backend`.

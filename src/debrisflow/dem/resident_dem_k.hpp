@@ -2,11 +2,13 @@
 // The small per-grain steps of the resident DEM loop (dem/resident_dem.hpp) that the host
 // solver does with its own containers: the contact pass's copy of the grain state, the grains'
 // bounding box (dem/grain_bounds_k.hpp), the keys of the reverse index, and the flags of the
-// grains that leave (outlets, the domain exit). Host/device functors.
+// grains that leave (outlets, the domain exit) or that a feed's new grains must keep clear of.
+// Host/device functors.
 #include "debrisflow/core/domain.hpp"
 #include "debrisflow/dem/grain_bounds_k.hpp"
 #include "debrisflow/dem/grain_contact_k.hpp"
 #include "debrisflow/flow/exit_faces_k.hpp"
+#include "debrisflow/flow/feed_reach_k.hpp"
 #include "debrisflow/flow/outlet_box_k.hpp"
 #include <cmath>
 #include <cstdint>
@@ -89,6 +91,15 @@ struct GrainEscaped {
     }
 };
 
+// flag[i] = 1 for the grains near a feed's region (FeedReach::near), 0 otherwise.
+struct GrainNearFeed {
+    const Vec3* pos;
+    const Real* radius;
+    flow::FeedReach region;
+    Index* flag;
+    DF_HD void operator()(Index i) const { flag[i] = region.near(pos[i], radius[i]); }
+};
+
 // The mass of grain i (the sum over the grains: the mass the set holds).
 struct GrainMass {
     const Real* mass;
@@ -100,6 +111,7 @@ static_assert(std::is_trivially_copyable_v<GrainKeepOutsideBox>);
 static_assert(std::is_trivially_copyable_v<GrainKeepInsideDomain>);
 static_assert(std::is_trivially_copyable_v<GrainLeaverFaces>);
 static_assert(std::is_trivially_copyable_v<GrainEscaped>);
+static_assert(std::is_trivially_copyable_v<GrainNearFeed>);
 static_assert(std::is_trivially_copyable_v<SlotPartnerKey>);
 
 } // namespace debrisflow::dem

@@ -1,5 +1,6 @@
 #include "debrisflow/flow/grain_feed.hpp"
 #include "debrisflow/dem/dem_solver.hpp"
+#include "debrisflow/dem/resident_dem_backend.hpp"
 #include "debrisflow/scenario/build_grains.hpp"
 #include <cmath>
 
@@ -17,23 +18,37 @@ Real GrainFeed::volume_of(Real d) const {
     return case_.dim == 2 ? pi * r * r * case_.dem.thickness : Real(4) / 3 * pi * r * r * r;
 }
 
+FeedReach GrainFeed::reach() const {
+    return {spec_.min, spec_.max, spec_.size.max, case_.dim == 2};
+}
+
 void GrainFeed::apply(dem::DemSolver& dem, Real t, Real dt) {
     accrue(t, dt);
     if (owed_ < volume_of(next_d_)) return;
     auto& g = dem.grains();
     const Index before = g.size();
     // Grains near the region (possible overlaps), gathered once per batch.
-    const Real reach = spec_.size.max;
+    const FeedReach region = reach();
     std::vector<std::pair<Vec3, Real>> near;
-    for (Index i = 0; i < g.size(); ++i) {
-        const Vec3 p = g.pos[std::size_t(i)];
-        bool in = true;
-        for (int k = 0; k < 3; ++k)
-            if (!(case_.dim == 2 && k == 1))
-                in = in && p[k] > spec_.min[k] - reach - g.radius[std::size_t(i)] &&
-                     p[k] < spec_.max[k] + reach + g.radius[std::size_t(i)];
-        if (in) near.push_back({p, g.radius[std::size_t(i)]});
-    }
+    for (Index i = 0; i < g.size(); ++i)
+        if (region.near(g.pos[std::size_t(i)], g.radius[std::size_t(i)]))
+            near.push_back({g.pos[std::size_t(i)], g.radius[std::size_t(i)]});
+    place(std::move(near), g);
+    if (g.size() > before) dem.grains_added(before);
+}
+
+void GrainFeed::apply(dem::ResidentDemPhase& resident, dem::DemSolver& dem, Real t, Real dt) {
+    accrue(t, dt);
+    if (owed_ < volume_of(next_d_)) return;
+    // the few grains near the region come from where the grains are; the new ones go there
+    dem::GrainSet fresh = dem::GrainSet::continuing(dem.grains());
+    place(resident.grains_near(reach()), fresh);
+    dem.grains().reserve_ids(fresh.next_id());
+    if (fresh.size() > 0) resident.append(fresh);
+}
+
+// Random positions in the region clear of `near` and of each other, while a grain is owed.
+void GrainFeed::place(std::vector<std::pair<Vec3, Real>> near, dem::GrainSet& g) {
     std::uniform_real_distribution<Real> u(0, 1);
     auto& rng = sizes_.rng();
     constexpr int tries_per_grain = 200;
@@ -62,7 +77,6 @@ void GrainFeed::apply(dem::DemSolver& dem, Real t, Real dt) {
         if (!placed) break; // region full: the debt waits for the next step
         released(volume_of(next_d_), g.mass.back());
     }
-    if (g.size() > before) dem.grains_added(before);
 }
 
 } // namespace debrisflow::flow

@@ -1,10 +1,14 @@
 #pragma once
 #include "debrisflow/dem/grain_set.hpp"
+#include "debrisflow/flow/feed_reach_k.hpp"
 #include "debrisflow/flow/solid_feed.hpp"
+#include <utility>
+#include <vector>
 
 namespace debrisflow::dem {
 class DemSolver;
-}
+class ResidentDemPhase;
+} // namespace debrisflow::dem
 
 namespace debrisflow::flow {
 
@@ -18,16 +22,16 @@ public:
 
     // Inserts what is owed after a step of dt ending at t.
     void apply(dem::DemSolver& dem, Real t, Real dt);
-    // Whether the step of dt ending at t leaves at least the next grain owed, i.e. whether
-    // apply() would place grains (and read the grains' positions) rather than only add to the
-    // debt: what a resident DEM loop asks before it copies its grains to the host.
-    bool due(Real t, Real dt) const { return owed() + q_.at(t) * dt >= volume_of(next_d_); }
-
+    // The same for grains resident in a backend's memory: the grains near the region are
+    // looked for there and the new ones appended there (dem/resident_dem.hpp).
+    void apply(dem::ResidentDemPhase& resident, dem::DemSolver& dem, Real t, Real dt);
     // One grain of the smallest size the feed can release (for the DEM time step).
     Real smallest_diameter() const { return spec_.size.min; }
 
 private:
     Real volume_of(Real d) const;
+    FeedReach reach() const;
+    void place(std::vector<std::pair<Vec3, Real>> near, dem::GrainSet& into);
 
     int material_;
 };
