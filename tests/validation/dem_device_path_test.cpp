@@ -375,6 +375,82 @@ every = 0.005
     // no probe reads the grains in the run: the one copy to the host is the end's
     EXPECT_EQ(s.copies_to_host, 1);
 }
+// Spheres falling into a box onto a floor mapped by pressure panels: the publish before each
+// sample of the map brings back the floor's contact loads of the last evaluation, recorded in
+// the host slot pass's order.
+TEST(DemResident, PressureMapUnderFallingSpheres) {
+    const std::string file = test::write_temp_case("resident_pressure_map", R"(
+name = "resident_pressure_map"
+dimensions = 3
+[time]
+end = 0.15
+[output]
+vtk = false
+[domain]
+min = [-0.01, -0.01, -0.06]
+max = [0.21, 0.21, 0.3]
+[dem]
+safety = 0.1
+[[material]]
+name = "glass"
+density = 2500
+kn = 2e4
+restitution = 0.3
+friction = 0.5
+[[wall]]
+name = "floor"
+shape = "box"
+material = "glass"
+min = [0, 0, -0.05]
+max = [0.2, 0.2, 0]
+[[wall]]
+name = "left"
+shape = "plane"
+material = "glass"
+point = [0, 0, 0]
+normal = [1, 0, 0]
+[[wall]]
+name = "right"
+shape = "plane"
+material = "glass"
+point = [0.2, 0, 0]
+normal = [-1, 0, 0]
+[[wall]]
+name = "front"
+shape = "plane"
+material = "glass"
+point = [0, 0, 0]
+normal = [0, 1, 0]
+[[wall]]
+name = "back"
+shape = "plane"
+material = "glass"
+point = [0, 0.2, 0]
+normal = [0, -1, 0]
+[[grains]]
+name = "spheres"
+material = "glass"
+count = 300
+seed = 3
+diameter = 0.01
+region = { shape = "box", min = [0.01, 0.01, 0.02], max = [0.19, 0.19, 0.1] }
+[[probe]]
+name = "map"
+type = "pressure_map"
+wall = "floor"
+axis = "z"
+normal = [0, 0, 1]
+panels = [2, 2]
+every = 0.005
+)");
+    const State s = check_resident(file, {}, 0.15, 0.01);
+    // the map read loads: its panels' mean pressure is positive once the spheres land
+    Real largest = 0;
+    for (const auto& row : s.probes[0]) // time, then the panels' columns
+        for (std::size_t k = 1; k < row.size(); ++k) largest = std::max(largest, row[k]);
+    EXPECT_GT(largest, 0);
+}
+
 // A hopper feed releasing grains onto baffles (structures of boxes): the grains near the
 // hopper's region come to the host, where the new ones are placed clear of them, and the new
 // ones are appended where the grains are.

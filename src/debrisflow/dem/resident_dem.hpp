@@ -113,6 +113,7 @@ public:
         };
         down_slots(grain_, host_.grain_slots_);
         down_slots(wall_, host_.wall_slots_);
+        record_wall_contacts();
         ++copies_to_host_;
     }
 
@@ -137,6 +138,7 @@ public:
         upload_once();
         const Index m = fresh.size(), held = n_;
         if (m == 0) return;
+        record_wall_contacts(); // of the evaluation before the rows move
         const auto tail = [&](auto& to, const auto& from) {
             to.resize(held + m);
             to.upload_at(held, from.data(), m);
@@ -236,6 +238,7 @@ private:
     Leaving remove_leavers(const flow::ExitFaces* faces) {
         Leaving out;
         if (Space::first_where(n_, exec::Dropped{keep_.data()}) == n_) return out; // none
+        record_wall_contacts(); // of the evaluation before the rows move
         if (faces) out.mass_in_set = Space::sum_of(n_, GrainMass{mass_.data()});
         leave_.resize(n_);
         at_.resize(n_);
@@ -261,6 +264,36 @@ private:
         rebuild();
         return out;
     }
+    // The contact loads of the last evaluation on the walls that keep them (a pressure map
+    // reads them), in grain and slot order as the host's slot pass records them: each touching
+    // wall slot's force and point, brought to the host once per evaluation when asked for.
+    void record_wall_contacts() {
+        if (recorded_ || n_ == 0 || wall_touching_.size() != n_ * wall_.cap) return;
+        recorded_ = true;
+        auto& wl = host_.walls_.walls();
+        bool any = false;
+        for (const auto& w : wl) any = any || w.record_contacts;
+        if (!any) return;
+        std::vector<Index> count(static_cast<std::size_t>(n_)),
+            partner(static_cast<std::size_t>(wall_.partner.size()));
+        std::vector<std::uint8_t> touching(static_cast<std::size_t>(wall_touching_.size()));
+        std::vector<Real> out(static_cast<std::size_t>(wall_out_.size()));
+        wall_.count.download(count.data());
+        wall_.partner.download(partner.data());
+        wall_touching_.download(touching.data());
+        wall_out_.download(out.data());
+        const auto& prims = host_.walls_.primitives();
+        for (std::size_t i = 0; i < count.size(); ++i)
+            for (Index k = 0; k < count[i]; ++k) {
+                const std::size_t s = i * std::size_t(wall_.cap) + std::size_t(k);
+                if (!touching[s]) continue;
+                auto& w = wl[std::size_t(prims[std::size_t(partner[s])].wall)];
+                if (!w.record_contacts) continue;
+                const Real* o = out.data() + 9 * s;
+                w.contacts.push_back({{o[3], o[4], o[5]}, {-o[0], -o[1], -o[2]}});
+            }
+    }
+
     // values[i] of the m items with flags[i], in index order (at_ holds the flags' scan).
     template <class T>
     std::vector<T> picked(const Buffer<T>& values, const Buffer<Index>& flags, Index m) {
@@ -472,6 +505,7 @@ private:
         const Real h = host_.current_h_;
         auto& wl = host_.walls_.walls();
         for (auto& w : wl) w.contacts.clear();
+        recorded_ = false; // this evaluation's contact loads are still where the grains are
         // the walls' states (few: every evaluation) and their faces if they moved
         if (faces_stale_) upload_faces();
         const auto& states = host_.refresh_wall_states();
@@ -543,6 +577,7 @@ private:
     DemSolver& host_;
     GrainSet& g_;
     bool resident_ = false, rolling_ = false, faces_stale_ = false;
+    bool recorded_ = false; // the walls' contact loads of the last evaluation are on the host
     Index n_ = 0;
     // grains (GrainView's arrays), their contact pass's copy, their contact sums
     Buffer<Vec3> pos_, vel_, spin_, force_, torque_;

@@ -199,9 +199,8 @@ namespace {
 // diffusion model, both time schemes. The DEM phase (dem/resident_dem.hpp): spherical grains
 // (discs in 2D) with every contact law and rolling model, walls of planes, boxes and triangle
 // meshes (fixed, moving, removed by remove_at), settling (on the host, before the loop), the
-// domain exit, outlets and grain feeds (grains that leave are removed, and new ones placed, on
-// the host between a copy of the grains there and back), every grain probe but the pressure
-// map. Anything else is rejected here, so that `check` rejects it too.
+// domain exit, outlets and grain feeds, every grain probe. Anything else is rejected here, so
+// that `check` rejects it too.
 void require_backend_supports(const CaseSpec& c) {
     if (c.backend == "host") return;
     const auto no = [&](bool present, const std::string& what) {
@@ -219,8 +218,6 @@ void require_backend_supports(const CaseSpec& c) {
     no(c.has_bodies(), "grains and rigid bodies");
     for (const auto& g : c.dem.grains)
         no(!g.clump_centers.empty(), "clumps (" + g.origin.block() + ")");
-    for (const auto& p : c.probes)
-        no(p.type == "pressure_map", "a pressure map (" + p.origin.block() + ")");
 }
 
 } // namespace
