@@ -286,10 +286,8 @@ RunReport Simulation::run(const RunOptions& opt) {
             if (resident_) {
                 const auto left = resident_->remove_fluid_outside(domain_exit_.faces());
                 if (left.face.empty()) return;
-                std::vector<flow::DomainExit::Leaver> leavers;
-                for (std::size_t k = 0; k < left.face.size(); ++k)
-                    leavers.push_back({left.face[k], left.mass[k]});
-                const std::string note = domain_exit_.tally_fluid(leavers, left.mass_in_set, s.t);
+                const std::string note = domain_exit_.tally_fluid(
+                    flow::DomainExit::leavers(left.face, left.mass), left.mass_in_set, s.t);
                 if (!note.empty()) log_.line(note);
                 return;
             }
@@ -299,10 +297,8 @@ RunReport Simulation::run(const RunOptions& opt) {
                 if (!dem_->may_have_left()) return;
                 const auto left = resident_dem_->remove_outside(domain_exit_.faces());
                 if (left.mass.empty()) return;
-                std::vector<flow::DomainExit::Leaver> leavers;
-                for (std::size_t k = 0; k < left.face.size(); ++k)
-                    leavers.push_back({left.face[k], left.mass[k]});
-                const std::string note = domain_exit_.tally_grains(leavers, left.mass_in_set, s.t);
+                const std::string note = domain_exit_.tally_grains(
+                    flow::DomainExit::leavers(left.face, left.mass), left.mass_in_set, s.t);
                 if (!note.empty()) log_.line(note);
                 return;
             }

@@ -247,12 +247,12 @@ private:
         out.mass = picked(mass_, leave_, gone);
         out.material = picked(material_, leave_, gone);
         if (faces) {
-            Buffer<int> picked;
-            picked.resize(gone);
+            Buffer<int> crossed;
+            crossed.resize(gone);
             Space::for_each(n_, GrainLeaverFaces{pos_.data(), *faces, leave_.data(), at_.data(),
-                                                 picked.data()});
+                                                 crossed.data()});
             out.face.resize(std::size_t(gone));
-            picked.download(out.face.data());
+            crossed.download(out.face.data());
         }
         const Index kept = Space::exclusive_scan(n_, keep_.data(), at_.data());
         order_.resize(kept);
@@ -613,7 +613,8 @@ private:
     Buffer<Index> index_scratch_;
     Buffer<std::uint32_t> key_scratch_;
     Buffer<std::uint8_t> byte_scratch_;
-    // removal: the keep flags, the leavers' flags, their exclusive scan
+    // selections: the flags of the grains kept (a removal) or near a feed, the leavers' flags,
+    // the exclusive scan of either
     Buffer<Index> keep_, leave_, at_;
     long copies_to_host_ = 0, copies_from_host_ = 0;
     double t_neighbors_ = 0, t_forces_ = 0, t_integration_ = 0;

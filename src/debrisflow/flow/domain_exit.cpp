@@ -31,6 +31,13 @@ std::string DomainExit::tally_fluid(const std::vector<Leaver>& leavers, Real mas
                  mass_in_set, t);
 }
 
+std::vector<DomainExit::Leaver> DomainExit::leavers(const std::vector<int>& face,
+                                                    const std::vector<Real>& mass) {
+    std::vector<Leaver> out;
+    for (std::size_t k = 0; k < face.size(); ++k) out.push_back({face[k], mass[k]});
+    return out;
+}
+
 std::string DomainExit::tally_grains(const std::vector<Leaver>& leavers, Real mass_in_set, Real t) {
     return tally("grains", "kg", grains_, grains_warned_, leavers, mass_in_set, t);
 }

@@ -61,6 +61,8 @@ public:
     // before they were removed; the log lines as apply's. The resident SPH loop finds and
     // removes its leavers itself and reports them here.
     std::string tally_fluid(const std::vector<Leaver>& leavers, Real mass_in_set, Real t);
+    // The leavers a resident phase reports as faces and masses, paired up.
+    static std::vector<Leaver> leavers(const std::vector<int>& face, const std::vector<Real>& mass);
     // The same for grains (the resident DEM loop's leavers; their masses in kg).
     std::string tally_grains(const std::vector<Leaver>& leavers, Real mass_in_set, Real t);
 
