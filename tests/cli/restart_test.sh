@@ -2,7 +2,8 @@
 # Checkpoint and restart (issue #31). For fluid cases (a gate, Laminar+SPS, Herschel-Bulkley,
 # an inlet and an outlet), grain cases (a settled column behind a gate; a hopper feed with its
 # random sizes; clumps; the granular flume; the column and the flume on the resident DEM loop), rigid-body cases (a block sliding in water; the
-# reduced container case; a hinged disc and a box on a spring falling into grains; mesh rocks
+# reduced container case; a hinged disc and a box on a spring falling into grains, on the host's
+# DEM loop and on the resident one; mesh rocks
 # from a feed) and coupled cases (FEM alone, SPH-FEM, SPH-DEM drag, the
 # SPH-DEM-FEM retaining dam), a run to T and the same run restarted from its checkpoint near
 # T/2 write byte-identical probe files, VTK frames and final state (the final checkpoint holds
@@ -62,6 +63,7 @@ dem_flume $src/cases/flume/flume30_reduced.toml 0.01
 body_in_fluid $src/cases/rigid/sliding_block2d.toml 0.3
 container_reduced $src/cases/papers/container_dambreak2d_reduced.toml 0.02
 bodies_grains_joints $inputs/restart_bodies_grains2d.toml 0.2
+bodies_grains_joints_resident $inputs/restart_bodies_grains2d.toml 0.2 --backend host_resident
 rock_feed $inputs/restart_rock_feed3d.toml 0.6
 fem_cantilever $src/cases/fem/cantilever_steel.toml 0.02
 sph_fem_elastic_gate $src/cases/fem/elastic_gate2d.toml 0.06

@@ -451,6 +451,106 @@ every = 0.005
     EXPECT_GT(largest, 0);
 }
 
+// Rigid bodies as obstacles (issue #34: "their obstacle spheres live on the device, the
+// reaction on each body is reduced there, and the few bodies are updated on the host"): 300
+// spheres fall onto a free steel block in a box. The block's contact spheres are uploaded when
+// it moves, each grain's candidate spheres come from a cell grid of the spheres built where
+// the grains are, and the block's load is reduced there; the block, moved on the host by that
+// load, and the grains stay bitwise those of the host's loop.
+TEST(DemResident, SpheresOntoAFreeBlock) {
+    const std::string file = test::write_temp_case("resident_block", R"(
+name = "resident_block"
+dimensions = 3
+[time]
+end = 0.2
+[output]
+vtk = false
+[domain]
+min = [-0.01, -0.01, -0.06]
+max = [0.21, 0.21, 0.4]
+[dem]
+safety = 0.1
+[[material]]
+name = "glass"
+density = 2500
+kn = 2e4
+restitution = 0.3
+friction = 0.5
+[[material]]
+name = "steel"
+density = 7800
+kn = 2e5
+restitution = 0.3
+friction = 0.5
+[[wall]]
+name = "floor"
+shape = "box"
+material = "glass"
+min = [0, 0, -0.05]
+max = [0.2, 0.2, 0]
+[[wall]]
+name = "left"
+shape = "plane"
+material = "glass"
+point = [0, 0, 0]
+normal = [1, 0, 0]
+[[wall]]
+name = "right"
+shape = "plane"
+material = "glass"
+point = [0.2, 0, 0]
+normal = [-1, 0, 0]
+[[wall]]
+name = "front"
+shape = "plane"
+material = "glass"
+point = [0, 0, 0]
+normal = [0, 1, 0]
+[[wall]]
+name = "back"
+shape = "plane"
+material = "glass"
+point = [0, 0.2, 0]
+normal = [0, -1, 0]
+[[body]]
+name = "block"
+material = "steel"
+shape = "box"
+min = [0.07, 0.07, 0.0005]
+max = [0.13, 0.13, 0.0605]
+[rigid]
+contact_spacing = 0.01
+[[grains]]
+name = "spheres"
+material = "glass"
+count = 300
+seed = 3
+diameter = 0.01
+region = { shape = "box", min = [0.01, 0.01, 0.08], max = [0.19, 0.19, 0.16] }
+[[probe]]
+name = "block"
+type = "body"
+body = "block"
+every = 0.005
+)");
+    const State s = check_resident(file, {}, 0.2, 0.01);
+    // the block was struck: its probe's columns (time, then position, velocity, ...) moved
+    const auto& rows = s.probes[0];
+    ASSERT_GT(rows.size(), 2u);
+    double moved = 0;
+    for (std::size_t k = 1; k < rows.back().size(); ++k)
+        moved = std::max(moved, std::abs(double(rows.back()[k] - rows.front()[k])));
+    EXPECT_GT(moved, 0);
+}
+
+// A disc on a pendulum and a box joined by a spring fall into a bed of 150 discs (2D,
+// Hertz-Mindlin): bodies with joints, body-wall and body-body contacts (on the host) and
+// body-grain contacts (where the grains are).
+TEST(DemResident, BodiesWithJointsIntoABedOfDiscs) {
+    check_resident("tests/cli/inputs/restart_bodies_grains2d.toml", {"output.vtk=false"}, 0.2,
+                   0.012);
+}
+
 // A hopper feed releasing grains onto baffles (structures of boxes): the grains near the
 // hopper's region come to the host, where the new ones are placed clear of them, and the new
 // ones are appended where the grains are.

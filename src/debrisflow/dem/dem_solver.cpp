@@ -197,40 +197,34 @@ void DemSolver::build_obstacle_slots() {
     obstacles_seen_ = obstacles_->version;
     obstacle_builds_seen_ = builds_;
     const auto& sph = obstacles_->spheres;
-    const Index n = grains_.size();
-    Real rmax = 0;
-    for (const auto& o : sph) rmax = std::max(rmax, o.r);
-    // Hash of the obstacle spheres on cells of one reach (largest grain + sphere + skin).
-    const Real cell = std::max(max_radius_ + rmax + search_margin(), Real(1e-9));
-    auto key = [&](long i, long j, long k) {
-        return (std::uint64_t(i) * 73856093u) ^ (std::uint64_t(j) * 19349663u) ^
-               (std::uint64_t(k) * 83492791u);
-    };
-    std::unordered_map<std::uint64_t, std::vector<Index>> hash;
-    for (std::size_t s = 0; s < sph.size(); ++s) {
-        const Vec3 p = sph[s].x;
-        hash[key(long(std::floor(p.x / cell)), long(std::floor(p.y / cell)),
-                 long(std::floor(p.z / cell)))]
-            .push_back(Index(s));
+    configure_obstacle_grid(obstacle_grid_);
+    if (!sph.empty()) {
+        const Real* c = &sph[0].x.x;
+        obstacle_grid_.build(c, c + 1, c + 2, Index(sph.size()), ObstacleCandidates::stride);
     }
     const GrainView g = grains_.view();
-    const Real skin = search_margin();
-    obstacle_slots_.build(n, [&](Index i, auto&& emit) {
-        const Vec3 p = g.pos[i];
-        const long ci = long(std::floor(p.x / cell)), cj = long(std::floor(p.y / cell)),
-                   ck = long(std::floor(p.z / cell));
-        for (long dk = -1; dk <= 1; ++dk)
-            for (long dj = -1; dj <= 1; ++dj)
-                for (long di = -1; di <= 1; ++di) {
-                    auto it = hash.find(key(ci + di, cj + dj, ck + dk));
-                    if (it == hash.end()) continue;
-                    for (Index s : it->second) {
-                        const Vec3 d = p - sph[std::size_t(s)].x;
-                        const Real reach = g.radius[i] + sph[std::size_t(s)].r + skin;
-                        if (dot(d, d) < reach * reach) emit(s, std::uint32_t(s));
-                    }
-                }
-    });
+    obstacle_slots_.build(grains_.size(),
+                          ObstacleCandidates{obstacle_grid_.view(), sph.data(), Index(sph.size()),
+                                             g.pos, g.radius, search_margin()});
+}
+
+void DemSolver::configure_obstacle_grid(neighbors::CellGrid& grid) const {
+    const auto& sph = obstacles_->spheres;
+    Real rmax = 0;
+    Vec3 lo{}, hi{};
+    for (std::size_t s = 0; s < sph.size(); ++s) {
+        rmax = std::max(rmax, sph[s].r);
+        for (int d = 0; d < 3; ++d) {
+            lo[d] = s == 0 ? sph[s].x[d] : std::min(lo[d], sph[s].x[d]);
+            hi[d] = s == 0 ? sph[s].x[d] : std::max(hi[d], sph[s].x[d]);
+        }
+    }
+    // Cells of one reach over the spheres' box widened by a cell (never empty): every sphere
+    // a grain may touch lies in the grain's 3 x 3 (x 3) stencil; a grain beyond the box is
+    // placed in its edge cells.
+    const Real cell = std::max(max_radius_ + rmax + search_margin(), Real(1e-9));
+    for (int d = 0; d < 3; ++d) lo[d] -= cell, hi[d] += cell;
+    grid.configure(lo, hi, cell, params_.dim, {false, false, false});
 }
 
 void DemSolver::size_search_margin() {

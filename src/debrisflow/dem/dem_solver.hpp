@@ -170,6 +170,9 @@ private:
     std::vector<std::uint8_t> wall_touching_, obstacle_touching_;
     // Candidate grain-obstacle pairs within reach (rebuilt when either side moved).
     void build_obstacle_slots();
+    // The cell grid of the obstacle spheres' box, cells of one reach (configured, not built).
+    void configure_obstacle_grid(neighbors::CellGrid& grid) const;
+    neighbors::CellGrid obstacle_grid_;
     // Each wall's contact material (-1: the grain's own), for the stable step.
     std::vector<int> wall_materials() const;
     // Lowers the automatic step for the rigid bodies' contact spheres (their mass and inertia);

@@ -61,17 +61,20 @@ public:
     }
 
     // As DemSolver::compute_forces: the step just taken ended with a force evaluation that the
-    // grains were kicked with; evaluate again only for a new wall layout or a removed wall.
+    // grains were kicked with; evaluate again only for a new wall layout, a removed wall or
+    // bodies that moved their contact spheres after the step (they take this reaction too).
     void compute_forces() override {
         upload_once();
-        if (host_.evaluated_ && host_.walls_.layout() == host_.walls_seen_) {
+        const bool bodies_moved =
+            host_.obstacles_ && host_.obstacles_->version != host_.obstacles_seen_;
+        if (host_.evaluated_ && !bodies_moved && host_.walls_.layout() == host_.walls_seen_) {
             host_.evaluated_ = false;
             return;
         }
         host_.evaluated_ = false;
         if (!host_.built_ || host_.walls_.layout() != host_.walls_seen_) rebuild();
         ScopedTimer timer(t_forces_);
-        forces(0);
+        forces(0, bodies_moved);
     }
 
     void predictor(Real) override {}
@@ -113,6 +116,7 @@ public:
         };
         down_slots(grain_, host_.grain_slots_);
         down_slots(wall_, host_.wall_slots_);
+        down_slots(obstacle_, host_.obstacle_slots_);
         record_wall_contacts();
         ++copies_to_host_;
     }
@@ -148,7 +152,7 @@ public:
         tail(mass_, fresh.mass), tail(inv_mass_, fresh.inv_mass);
         tail(inv_inertia_, fresh.inv_inertia), tail(material_, fresh.material);
         tail(id_, fresh.id);
-        for (Slots* s : {&grain_, &wall_}) {
+        for (Slots* s : {&grain_, &wall_, &obstacle_}) {
             if (s->count.size() != held) continue; // never built: nothing to carry
             const Index slots = (held + m) * s->cap;
             s->count.resize(held + m);
@@ -180,18 +184,20 @@ public:
     }
 
     std::size_t memory_bytes() const override {
-        std::size_t b = pos_.bytes() + vel_.bytes() + spin_.bytes() + force_.bytes() +
-                        torque_.bytes() + radius_.bytes() + mass_.bytes() + inv_mass_.bytes() +
-                        inv_inertia_.bytes() + material_.bytes() + id_.bytes() + hot_.bytes() +
-                        acc_.bytes() + grain_.bytes() + wall_.bytes() + slot_out_.bytes() +
-                        slot_touching_.bytes() + wall_out_.bytes() + wall_touching_.bytes() +
-                        reverse_key_.bytes() + reverse_.bytes() + reverse_start_.bytes() +
-                        keys_.bytes() + order_.bytes() + start_cells_.bytes() + table_.bytes() +
-                        prims_.bytes() + wall_states_.bytes() + active_.bytes() + bounds_.bytes() +
-                        vec_scratch_.bytes() + real_scratch_.bytes() + index_scratch_.bytes() +
-                        key_scratch_.bytes() + byte_scratch_.bytes() + keep_.bytes() +
-                        leave_.bytes() + at_.bytes();
-        return b + sorter_.bytes() + reverse_sorter_.bytes();
+        std::size_t b =
+            pos_.bytes() + vel_.bytes() + spin_.bytes() + force_.bytes() + torque_.bytes() +
+            radius_.bytes() + mass_.bytes() + inv_mass_.bytes() + inv_inertia_.bytes() +
+            material_.bytes() + id_.bytes() + hot_.bytes() + acc_.bytes() + grain_.bytes() +
+            wall_.bytes() + obstacle_.bytes() + spheres_.bytes() + obstacle_out_.bytes() +
+            obstacle_touching_.bytes() + sphere_keys_.bytes() + sphere_order_.bytes() +
+            sphere_starts_.bytes() + slot_out_.bytes() + slot_touching_.bytes() +
+            wall_out_.bytes() + wall_touching_.bytes() + reverse_key_.bytes() + reverse_.bytes() +
+            reverse_start_.bytes() + keys_.bytes() + order_.bytes() + start_cells_.bytes() +
+            table_.bytes() + prims_.bytes() + wall_states_.bytes() + active_.bytes() +
+            bounds_.bytes() + vec_scratch_.bytes() + real_scratch_.bytes() +
+            index_scratch_.bytes() + key_scratch_.bytes() + byte_scratch_.bytes() + keep_.bytes() +
+            leave_.bytes() + at_.bytes();
+        return b + sorter_.bytes() + reverse_sorter_.bytes() + sphere_sorter_.bytes();
     }
     long copies_to_host() const override { return copies_to_host_; }
     long copies_from_host() const override { return copies_from_host_; }
@@ -221,6 +227,7 @@ private:
         };
         up_slots(grain_, host_.grain_slots_);
         up_slots(wall_, host_.wall_slots_);
+        up_slots(obstacle_, host_.obstacle_slots_);
         rolling_ = host_.grain_slots_.rolling_;
         up(table_, host_.table_);
         upload_faces();
@@ -340,6 +347,10 @@ private:
         faces_stale_ = faces_stale_ || host_.walls_.max_speed() > 0;
         if (host_.drift_ > Real(0.5) * host_.skin_ || host_.walls_.layout() != host_.walls_seen_)
             rebuild();
+        const dem::ObstacleSet* o = host_.obstacles_;
+        if (o &&
+            (o->version != host_.obstacles_seen_ || host_.builds_ != host_.obstacle_builds_seen_))
+            build_obstacle_slots();
         {
             ScopedTimer timer(t_forces_);
             forces(Real(0.5) * h);
@@ -430,7 +441,7 @@ private:
         for (auto* a : {&radius_, &mass_, &inv_mass_, &inv_inertia_}) gather(*a, real_scratch_, 1);
         gather(material_, byte_scratch_, 1);
         gather(id_, key_scratch_, 1);
-        for (Slots* s : {&grain_, &wall_}) {
+        for (Slots* s : {&grain_, &wall_, &obstacle_}) {
             if (s->count.size() != held) continue; // never built: nothing to carry
             const int cap = int(s->cap);
             gather(s->count, index_scratch_, 1);
@@ -498,8 +509,48 @@ private:
         reverse_built_ = host_.builds_;
     }
 
+    // --- the rigid bodies' contact spheres (DemSolver::build_obstacle_slots) ---------------
+    // The spheres as the bodies left them (the few bodies move on the host): uploaded when
+    // they moved or changed.
+    void upload_spheres() {
+        const ObstacleSet& o = *host_.obstacles_;
+        if (spheres_version_ == o.version && spheres_.size() == Index(o.spheres.size())) return;
+        spheres_.upload(o.spheres.data(), Index(o.spheres.size()));
+        spheres_version_ = o.version;
+    }
+    // Each grain's candidate spheres within reach, from a cell grid of the spheres (a sort of
+    // the spheres by cell, as the grains'), carrying the history of the spheres that stay.
+    void build_obstacle_slots() {
+        ScopedTimer timer(t_neighbors_);
+        const ObstacleSet& o = *host_.obstacles_;
+        if (o.spheres.size() != host_.obstacle_spheres_timed_) host_.include_bodies();
+        host_.obstacles_seen_ = o.version;
+        host_.obstacle_builds_seen_ = host_.builds_;
+        upload_spheres();
+        const Index ns = spheres_.size();
+        host_.configure_obstacle_grid(sphere_config_);
+        neighbors::GridView grid = sphere_config_.view();
+        const Index cells = Index(sphere_config_.cell_count());
+        sphere_keys_.resize(ns);
+        sphere_order_.resize(ns);
+        sphere_starts_.resize(cells + 1);
+        if (ns > 0) {
+            const Real* c = &spheres_.data()[0].x.x;
+            Space::for_each(ns,
+                            neighbors::CellKeys{grid, c, c + 1, c + 2, ObstacleCandidates::stride,
+                                                nullptr, sphere_keys_.data()});
+            sphere_sorter_.sort(sphere_keys_.data(), ns, cells, sphere_order_.data());
+        }
+        Space::for_each(cells + 1, exec::CellStarts{sphere_keys_.data(), sphere_order_.data(), ns,
+                                                    sphere_starts_.data()});
+        grid.start = sphere_starts_.data();
+        grid.order = sphere_order_.data();
+        build_slots(obstacle_, ObstacleCandidates{grid, spheres_.data(), ns, pos_.data(),
+                                                  radius_.data(), host_.search_margin()});
+    }
+
     // --- the force evaluation (DemSolver::forces in the device's layout) -----------------
-    void forces(Real half_kick) {
+    void forces(Real half_kick, bool collect_obstacles = false) {
         const bool ends_step = half_kick > 0;
         const bool measure = host_.measure_contact_force_;
         const Real h = host_.current_h_;
@@ -551,12 +602,23 @@ private:
         in.wall_xi = wall_.xi.data();
         in.wall_roll = rolling_ ? wall_.mroll.data() : nullptr;
         in.wall_capacity = wall_.cap;
-        const Index wslots = n_ * wall_.cap;
+        ObstacleSet* o = host_.obstacles_;
+        const bool bodies = o && obstacle_.count.size() == n_ && obstacle_.cap > 0;
+        if (o) upload_spheres(); // moved since the slots were built (an evaluation between steps)
+        in.spheres = o ? spheres_.data() : nullptr;
+        in.obstacle_partner = bodies ? obstacle_.partner.data() : nullptr;
+        in.obstacle_count = bodies ? obstacle_.count.data() : nullptr;
+        in.obstacle_xi = obstacle_.xi.data();
+        in.obstacle_roll = rolling_ ? obstacle_.mroll.data() : nullptr;
+        in.obstacle_capacity = obstacle_.cap;
+        const Index wslots = n_ * wall_.cap, oslots = bodies ? n_ * obstacle_.cap : 0;
         wall_out_.resize(9 * wslots);
         wall_touching_.resize(wslots);
+        obstacle_out_.resize(6 * oslots);
+        obstacle_touching_.resize(oslots);
         const SlotReport own = Space::template fold<SlotReport>(
-            n_, GrainOwnSlots{GrainOwnPass{in}, wall_out_.data(), wall_touching_.data(), nullptr,
-                              nullptr, measure});
+            n_, GrainOwnSlots{GrainOwnPass{in}, wall_out_.data(), wall_touching_.data(),
+                              obstacle_out_.data(), obstacle_touching_.data(), measure});
         for (std::size_t w = 0; w < wl.size(); ++w) {
             const WallSlotLoad load{int(w),
                                     wl[w].origin,
@@ -569,6 +631,27 @@ private:
             const LoadSum sum = Space::template fold<LoadSum>(n_, load);
             wl[w].force = sum.force;
             wl[w].moment = sum.moment;
+        }
+        // each body's load, reduced where the grains are; its impulse on the host, as
+        // DemSolver::forces adds it (the few bodies are moved there)
+        if (o && (ends_step || collect_obstacles) && h > 0) {
+            const std::size_t nb = o->body_com.size();
+            o->impulse.resize(nb);
+            o->angular_impulse.resize(nb);
+            for (std::size_t b = 0; b < nb && bodies; ++b) {
+                const BodySlotLoad load{int(b),
+                                        o->body_com[b],
+                                        spheres_.data(),
+                                        obstacle_.partner.data(),
+                                        obstacle_.count.data(),
+                                        obstacle_.cap,
+                                        obstacle_out_.data(),
+                                        obstacle_touching_.data()};
+                const LoadSum sum = Space::template fold<LoadSum>(n_, load);
+                o->impulse[b] += h * sum.force;
+                o->angular_impulse[b] += h * sum.moment;
+            }
+            o->time += h;
         }
         host_.contacts_ = gg.touching + own.touching;
         host_.sum_contact_force_ = measure ? gg.force_sum + own.force_sum : 0;
@@ -587,9 +670,18 @@ private:
     Buffer<GrainState> hot_;
     Buffer<Real> acc_;
     // contact slots, each slot's evaluation, the reverse index
-    Slots grain_, wall_;
+    Slots grain_, wall_, obstacle_;
     Buffer<Real> slot_out_, wall_out_;
     Buffer<std::uint8_t> slot_touching_, wall_touching_;
+    // the rigid bodies' contact spheres (version: the ObstacleSet's when uploaded), their
+    // cell grid, each grain-sphere slot's evaluation
+    Buffer<ObstacleSphere> spheres_;
+    std::uint64_t spheres_version_ = ~std::uint64_t(0);
+    neighbors::CellGrid sphere_config_; // configured on the host: only its view is used
+    Buffer<Index> sphere_keys_, sphere_order_, sphere_starts_;
+    typename Space::Sorter sphere_sorter_;
+    Buffer<Real> obstacle_out_;
+    Buffer<std::uint8_t> obstacle_touching_;
     Buffer<Index> reverse_key_, reverse_, reverse_start_;
     long reverse_built_ = -1;
     typename Space::Sorter reverse_sorter_;

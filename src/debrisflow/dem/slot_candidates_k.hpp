@@ -2,8 +2,10 @@
 // Who may touch whom before the next neighbour rebuild, grain by grain, written once for the
 // host (DemSolver::rebuild through ContactSlots::build) and a device: candidates(i, emit) calls
 // emit(partner, key) for each partner of grain i within reach (radii + skin).
+#include "debrisflow/dem/obstacles.hpp"
 #include "debrisflow/dem/wall_geometry_k.hpp"
 #include "debrisflow/neighbors/grid_view_k.hpp"
+#include <cstddef>
 #include <cstdint>
 #include <type_traits>
 
@@ -59,5 +61,34 @@ struct WallCandidatesOf {
     }
 };
 static_assert(std::is_trivially_copyable_v<WallCandidatesOf>);
+
+// Grain-obstacle candidates: the rigid bodies' contact spheres within reach, found on a cell
+// grid of the spheres (cells of one reach: largest grain + largest sphere + skin; built by
+// DemSolver::configure_obstacle_grid and a sort of the spheres by cell); the key is the
+// sphere's index.
+struct ObstacleCandidates {
+    neighbors::GridView grid;
+    const ObstacleSphere* spheres;
+    Index count; // spheres
+    const Vec3* pos;
+    const Real* radius;
+    Real skin;
+    // The spheres' centres as strided coordinates for the grid (a sphere is 15 reals).
+    static constexpr int stride = int(sizeof(ObstacleSphere) / sizeof(Real));
+    template <class Emit> DF_HD void operator()(Index i, Emit&& emit) const {
+        if (count == 0) return;
+        const Real ri = radius[i];
+        const Real* c = &spheres[0].x.x;
+        grid.for_each_neighbor(
+            -1, pos[i], c, c + 1, c + 2,
+            [&](Index s, Vec3, Real r2) {
+                const Real reach = ri + spheres[s].r + skin;
+                if (r2 < reach * reach) emit(s, std::uint32_t(s));
+            },
+            stride);
+    }
+};
+static_assert(std::is_trivially_copyable_v<ObstacleCandidates>);
+static_assert(sizeof(ObstacleSphere) % sizeof(Real) == 0 && offsetof(ObstacleSphere, x) == 0);
 
 } // namespace debrisflow::dem

@@ -198,24 +198,26 @@ namespace {
 // with their particles), DBC and mDBC (with either no-slip), every kernel, viscosity and
 // diffusion model, both time schemes. The DEM phase (dem/resident_dem.hpp): spherical grains
 // (discs in 2D) with every contact law and rolling model, walls of planes, boxes and triangle
-// meshes (fixed, moving, removed by remove_at), settling (on the host, before the loop), the
-// domain exit, outlets and grain feeds, every grain probe. Anything else is rejected here, so
-// that `check` rejects it too.
+// meshes (fixed, moving, removed by remove_at), rigid bodies as obstacles (their contact
+// spheres uploaded when they move, each body's load reduced where the grains are, the bodies
+// moved on the host), settling (on the host, before the loop), the domain exit, outlets and
+// grain feeds, every grain probe. Anything else is rejected here, so that `check` rejects it
+// too.
 void require_backend_supports(const CaseSpec& c) {
     if (c.backend == "host") return;
     const auto no = [&](bool present, const std::string& what) {
         if (present)
             throw InputError(fmt::format(
                 "{}: exec.backend = \"{}\" runs either fluid (with walls, inlets, outlets and "
-                "rigid bodies) or spherical grains (with walls, gates, feeds, outlets and the "
-                "domain exit) so far; this case has {} (use exec.backend = \"host\")",
+                "rigid bodies) or spherical grains (with walls, gates, feeds, outlets, rigid "
+                "bodies and the domain exit) so far; this case has {} (use exec.backend = "
+                "\"host\")",
                 c.exec_origin.at("backend"), c.backend, what));
     };
     no(c.fluids.empty() && !c.has_dem, "neither fluid nor grains");
     no(c.has_fem(), "FEM solids");
     if (!c.has_dem) return;
     no(!c.fluids.empty(), "both fluid and grains");
-    no(c.has_bodies(), "grains and rigid bodies");
     for (const auto& g : c.dem.grains)
         no(!g.clump_centers.empty(), "clumps (" + g.origin.block() + ")");
 }
