@@ -130,9 +130,9 @@ void check(const std::string& file, const std::vector<std::string>& sets, Real u
 
 // The resident DEM loop (exec.backend = "host_resident": grains and slots in the backend's
 // memory, every step through exec/'s primitives, dem/resident_dem.hpp) against the host's loop
-// in the same contact layout ("slots"): the same functors in the same order per grain, so
-// grains, springs and contacts agree bitwise; a wall's load is a sum over grains whose
-// partial sums the two loops split differently, so probes of wall loads agree to round-off.
+// in the same contact layout ("slots"): the same functors in the same order per grain, and the
+// walls' and bodies' loads split over the threads alike, so grains, springs, contacts, bodies
+// and probes agree bitwise.
 void check_same(const State& host, const State& resident, const std::string& file, double d) {
     ASSERT_EQ(host.steps, resident.steps);
     ASSERT_EQ(host.grains.size(), resident.grains.size());
@@ -156,7 +156,7 @@ void check_same(const State& host, const State& resident, const std::string& fil
     EXPECT_EQ(x.w, 0);
     EXPECT_EQ(x.f, 0);
     EXPECT_EQ(x.spring, 0);
-    EXPECT_LE(x.probe, 1e-12); // wall loads: partial sums in another order
+    EXPECT_EQ(x.probe, 0);
 }
 
 State check_resident(const std::string& file, const std::vector<std::string>& sets, Real until,

@@ -86,9 +86,7 @@ SlotReport DemSolver::own_slots(Real half_kick, bool measure) {
                                 in.obstacle_capacity,
                                 obstacle_out_.data(),
                                 obstacle_touching_.data()};
-        // split over the threads whatever n, as the resident loop's fold: a body's load, and so
-        // its motion, repeats bitwise there
-        const LoadSum sum = exec::reduce(n, LoadSum{}, load, LoadSum::combine);
+        const LoadSum sum = exec::reduce(n, LoadSum{}, load, LoadSum::combine, loop);
         const Real v[6] = {sum.force.x,  sum.force.y,  sum.force.z,
                            sum.moment.x, sum.moment.y, sum.moment.z};
         for (int k = 0; k < 6; ++k) body_sum_[6 * b + std::size_t(k)] = v[k];

@@ -127,8 +127,10 @@ void DemSolver::rebuild() {
             active_prims_.push_back(Index(k));
             active_bounds_.push_back(PrimitiveBounds::of(prims[k]));
         }
+    wall_bins_.build(active_bounds_, max_radius_ + skin, params_.dim);
     wall_slots_.build(n, WallCandidatesOf{prims.data(), active_prims_.data(), active_bounds_.data(),
-                                          Index(active_prims_.size()), g.pos, g.radius, skin});
+                                          Index(active_prims_.size()), g.pos, g.radius, skin,
+                                          wall_bins_.view()});
 }
 
 void DemSolver::configure_grid() {

@@ -11,6 +11,7 @@
 #include "debrisflow/dem/grain_slot_pass_k.hpp"
 #include "debrisflow/dem/materials.hpp"
 #include "debrisflow/dem/obstacles.hpp"
+#include "debrisflow/dem/wall_bins.hpp"
 #include "debrisflow/dem/wall_set.hpp"
 #include "debrisflow/neighbors/cell_grid.hpp"
 #include "debrisflow/time/phase.hpp"
@@ -137,6 +138,7 @@ private:
     // The active wall primitives and their boxes at the last rebuild (WallCandidatesOf).
     std::vector<Index> active_prims_;
     std::vector<PrimitiveBounds> active_bounds_;
+    WallBins wall_bins_; // of the active primitives, at each rebuild
     void configure_grid();
     // The grid's box around the grains' box b: one search radius beyond it, the domain's
     // length in periodic or empty directions (into grid_lo_, grid_hi_); and its cell edge.

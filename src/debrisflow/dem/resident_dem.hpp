@@ -194,9 +194,10 @@ public:
             wall_out_.bytes() + wall_touching_.bytes() + reverse_key_.bytes() + reverse_.bytes() +
             reverse_start_.bytes() + keys_.bytes() + order_.bytes() + start_cells_.bytes() +
             table_.bytes() + prims_.bytes() + wall_states_.bytes() + active_.bytes() +
-            bounds_.bytes() + vec_scratch_.bytes() + real_scratch_.bytes() +
-            index_scratch_.bytes() + key_scratch_.bytes() + byte_scratch_.bytes() + keep_.bytes() +
-            leave_.bytes() + at_.bytes();
+            bounds_.bytes() + bin_start_.bytes() + bin_items_.bytes() + bin_always_.bytes() +
+            vec_scratch_.bytes() + real_scratch_.bytes() + index_scratch_.bytes() +
+            key_scratch_.bytes() + byte_scratch_.bytes() + keep_.bytes() + leave_.bytes() +
+            at_.bytes();
         return b + sorter_.bytes() + reverse_sorter_.bytes() + sphere_sorter_.bytes();
     }
     long copies_to_host() const override { return copies_to_host_; }
@@ -398,9 +399,21 @@ private:
             }
         active_.upload(active_host_.data(), Index(active_host_.size()));
         bounds_.upload(bounds_host_.data(), Index(bounds_host_.size()));
+        // the bins of many faces: built on the host with the faces, uploaded
+        WallBins& bins = host_.wall_bins_;
+        bins.build(bounds_host_, host_.max_radius_ + skin, host_.params_.dim);
+        WallBinsView view = bins.view();
+        if (view.binned) {
+            bin_start_.upload(bins.start().data(), Index(bins.start().size()));
+            bin_items_.upload(bins.items().data(), Index(bins.items().size()));
+            bin_always_.upload(bins.always().data(), Index(bins.always().size()));
+            view.start = bin_start_.data();
+            view.items = bin_items_.data();
+            view.always = bin_always_.data();
+        }
         build_slots(wall_, WallCandidatesOf{prims_.data(), active_.data(), bounds_.data(),
                                             Index(active_host_.size()), pos_.data(), radius_.data(),
-                                            skin});
+                                            skin, view});
         Space::synchronize();
     }
 
@@ -619,6 +632,9 @@ private:
         const SlotReport own = Space::template fold<SlotReport>(
             n_, GrainOwnSlots{GrainOwnPass{in}, wall_out_.data(), wall_touching_.data(),
                               obstacle_out_.data(), obstacle_touching_.data(), measure});
+        // each wall's and body's load split over the threads as the host's slot pass splits it
+        // (DemSolver::own_slots), so that a moved body and a wall's load repeat it bitwise
+        const Index serial_below = DemSolver::parallel_min + 1;
         for (std::size_t w = 0; w < wl.size(); ++w) {
             const WallSlotLoad load{int(w),
                                     wl[w].origin,
@@ -628,7 +644,7 @@ private:
                                     wall_.cap,
                                     wall_out_.data(),
                                     wall_touching_.data()};
-            const LoadSum sum = Space::template fold<LoadSum>(n_, load);
+            const LoadSum sum = Space::template fold<LoadSum>(n_, load, serial_below);
             wl[w].force = sum.force;
             wl[w].moment = sum.moment;
         }
@@ -647,7 +663,7 @@ private:
                                         obstacle_.cap,
                                         obstacle_out_.data(),
                                         obstacle_touching_.data()};
-                const LoadSum sum = Space::template fold<LoadSum>(n_, load);
+                const LoadSum sum = Space::template fold<LoadSum>(n_, load, serial_below);
                 o->impulse[b] += h * sum.force;
                 o->angular_impulse[b] += h * sum.moment;
             }
@@ -697,6 +713,7 @@ private:
     Buffer<WallState> wall_states_;
     Buffer<Index> active_;
     Buffer<PrimitiveBounds> bounds_;
+    Buffer<Index> bin_start_, bin_items_, bin_always_; // WallBins of many faces
     std::vector<Index> active_host_;
     std::vector<PrimitiveBounds> bounds_host_;
     // reordering's scratch

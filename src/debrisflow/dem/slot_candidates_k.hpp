@@ -3,6 +3,7 @@
 // host (DemSolver::rebuild through ContactSlots::build) and a device: candidates(i, emit) calls
 // emit(partner, key) for each partner of grain i within reach (radii + skin).
 #include "debrisflow/dem/obstacles.hpp"
+#include "debrisflow/dem/wall_bins_k.hpp"
 #include "debrisflow/dem/wall_geometry_k.hpp"
 #include "debrisflow/neighbors/grid_view_k.hpp"
 #include <cstddef>
@@ -39,8 +40,9 @@ struct GrainCandidates {
 static_assert(std::is_trivially_copyable_v<GrainCandidates>);
 
 // Grain-wall candidates among the active primitives (`active`: their indices, `bounds`: their
-// boxes, which reject most faces of a flume's structures before the closest-point search); the
-// key is the primitive's index.
+// boxes, which reject most faces of a flume's structures before the closest-point search; `bins`:
+// those of the grain's cell and the unbinned ones when there are many, in the same ascending
+// order); the key is the primitive's index.
 struct WallCandidatesOf {
     const WallPrimitive* prims;
     const Index* active;
@@ -49,15 +51,16 @@ struct WallCandidatesOf {
     const Vec3* pos;
     const Real* radius;
     Real skin;
+    WallBinsView bins;
     template <class Emit> DF_HD void operator()(Index i, Emit&& emit) const {
         const Vec3 p = pos[i];
         const Real reach = radius[i] + skin;
-        for (Index a = 0; a < count; ++a) {
-            if (!bounds[a].may_reach(p, reach)) continue;
+        bins.for_each_candidate(p, count, [&](Index a) {
+            if (!bounds[a].may_reach(p, reach)) return;
             const WallPrimitive& w = prims[active[a]];
             const Vec3 q = closest_point(w, p);
             if (wall_distance(w, p, q) < reach) emit(active[a], std::uint32_t(active[a]));
-        }
+        });
     }
 };
 static_assert(std::is_trivially_copyable_v<WallCandidatesOf>);

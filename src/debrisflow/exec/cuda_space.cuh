@@ -224,6 +224,9 @@ struct CudaSpace {
         return out.at(0);
     }
 
+    // The host space's threshold for folding on one thread has no meaning on a device.
+    template <class T, class F> static T fold(Index n, const F& f, Index) { return fold<T>(n, f); }
+
     // The smallest i with bad(i), or n when there is none.
     template <class F> static Index first_where(Index n, const F& bad) {
         return reduce<Index>(n, cuda_detail::IndexWhere<F>{bad, n}, cuda_detail::Smaller{}, n);

@@ -78,6 +78,14 @@ struct HostSpace {
     template <class T, class F> static T fold(Index n, const F& f) {
         return exec::reduce(n, T{}, f, [](T& a, const T& b) { T::combine(a, b); });
     }
+    // The same on one thread below `serial_below` items, as the host solver's loop of that
+    // threshold: a load that moves a body then repeats the host's bitwise (a device ignores
+    // the threshold).
+    template <class T, class F> static T fold(Index n, const F& f, Index serial_below) {
+        return exec::reduce(
+            n, T{}, f, [](T& a, const T& b) { T::combine(a, b); },
+            exec::serial_below(serial_below));
+    }
 
     // The smallest i with bad(i), or n when there is none.
     template <class F> static Index first_where(Index n, const F& bad) {
