@@ -128,7 +128,7 @@ void expect_same_candidates(int dim) {
     EXPECT_GT(candidates, 2000); // grains near the bed have candidates
     // The large faces and the planes are tested by every grain, the mesh's faces only in a
     // grain's cell (cells about a widened face wide: those within reach and their neighbours):
-    // 43 per grain in 3D, 229 along the strip of faces 0.4 mm wide in the plane case (a reach
+    // 42 per grain in 3D, 193 along the strip of faces 0.4 mm wide in the plane case (a reach
     // of 14 mm spans dozens of them), instead of all 10,000; the bound asks for twenty times
     // fewer.
     const double per_grain = double(binned.tested) / double(g.pos.size());

@@ -13,25 +13,26 @@ void WallBins::build(const std::vector<PrimitiveBounds>& bounds, Real reach, int
     if (n < min_primitives) return;
     // The grid's box: the union of the bounded primitives' boxes widened by the reach.
     Vec3 lo{}, hi{};
-    Index binned = 0;
-    Real extent = 0; // summed largest side of the widened boxes
+    std::vector<Real> sides; // largest side of each widened box
     for (const PrimitiveBounds& b : bounds) {
         if (!b.bounded) continue;
         Real side = 0;
         for (int d = 0; d < 3; ++d) {
             if (dim == 2 && d == 1) continue;
             const Real l = b.lo[d] - reach, h = b.hi[d] + reach;
-            lo[d] = binned == 0 ? l : std::min(lo[d], l);
-            hi[d] = binned == 0 ? h : std::max(hi[d], h);
+            lo[d] = sides.empty() ? l : std::min(lo[d], l);
+            hi[d] = sides.empty() ? h : std::max(hi[d], h);
             side = std::max(side, h - l);
         }
-        extent += side;
-        ++binned;
+        sides.push_back(side);
     }
-    if (binned == 0) return;
-    // Cells about the size of a widened face (a face then lies in 1-2 cells per direction),
-    // coarsened until there are at most eight per binned face.
-    Real edge = std::max(extent / Real(binned), Real(1e-12));
+    if (sides.empty()) return;
+    const Index binned = Index(sides.size());
+    // Cells about the size of the median widened face (most faces then lie in 1-2 cells per
+    // direction; the few much larger ones, a flume's bed beside its baffles, stay out of the
+    // bins), coarsened until there are at most eight per face.
+    std::nth_element(sides.begin(), sides.begin() + sides.size() / 2, sides.end());
+    Real edge = std::max(sides[sides.size() / 2], Real(1e-12));
     const auto cells_along = [&](int d) {
         if (dim == 2 && d == 1) return 1.0;
         return std::max(1.0, std::floor(double(hi[d] - lo[d]) / double(edge)));
