@@ -551,6 +551,29 @@ TEST(DemResident, BodiesWithJointsIntoABedOfDiscs) {
                    0.012);
 }
 
+// Clumps of grains (dem/clump_step_k.hpp): 200 two-disc clumps collapse from a column (2D,
+// unsettled), each clump kicked, drifted and summed where the grains are; with the domain cut
+// short, clumps run out through its x+ face and are removed whole on the host (a member still
+// inside counted at the face its clump crossed), then the grains are taken over again.
+TEST(DemResident, ClumpsCollapseAndLeaveTheDomain) {
+    check_resident("cases/deposits/column_collapse2d_clumps.toml",
+                   {"dem.settle=false", "time.end=0.3", "output.vtk=false"}, 0.3, 0.005);
+    std::size_t at_end = 0;
+    const State s = check_resident(
+        "cases/deposits/column_collapse2d_clumps.toml",
+        {"dem.settle=false", "time.end=0.3", "output.vtk=false", "domain.max=[0.14, 0, 0.6]"}, 0.3,
+        0.005, &at_end);
+    EXPECT_GT(s.left.count[1], 0);     // through x+
+    EXPECT_EQ(s.left.count[1] % 2, 0); // whole clumps of two
+    EXPECT_LT(at_end, 400u);
+}
+
+// Spheres, two-sphere clumps and a free steel block onto a floor mapped by pressure panels:
+// clumps, a body and a pressure map together.
+TEST(DemResident, GrainsAndClumpsOnABodyAndAMappedFloor) {
+    check_resident("cases/validation/grains_on_body_floor.toml", {"output.vtk=false"}, 0.23, 0.01);
+}
+
 // A hopper feed releasing grains onto baffles (structures of boxes): the grains near the
 // hopper's region come to the host, where the new ones are placed clear of them, and the new
 // ones are appended where the grains are.

@@ -1,5 +1,6 @@
 #pragma once
 #include "debrisflow/core/domain.hpp"
+#include "debrisflow/dem/clump_step_k.hpp"
 #include "debrisflow/dem/contact_slots.hpp"
 #include "debrisflow/dem/dem_params.hpp"
 #include "debrisflow/dem/fluid_load.hpp"
@@ -193,6 +194,8 @@ private:
     // Sums the members' forces and torques (and gravity) on each clump, gives the clump its
     // closing half kick (half > 0) and moves the members' velocities and spins with it.
     void clump_forces(Real half);
+    // The clumps' arrays as the clump functors read them (dem/clump_step_k.hpp).
+    ClumpView clump_view();
     std::vector<std::int32_t> clump_of_id_;
     std::vector<Index> index_of_id_;
 

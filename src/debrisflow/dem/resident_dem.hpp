@@ -9,16 +9,19 @@
 // WallCandidatesOf), the reverse index (a stable sort on the partner), one contact evaluation
 // per slot (GrainSlotForces) gathered per grain (GrainSlotGather), and the per-grain pass
 // (GrainOwnSlots: gravity, walls, closing kick) with each wall's load reduced there
-// (WallSlotLoad). Only a few numbers cross to the host in a step: the drift's report, each
-// wall's load and the contact count. The host's DemSolver keeps the parameters, the walls
-// (moved on the host and uploaded when they move), the step and the counters; its grains and
-// slots are brought up to date by publish() (probes that read grains, frames, checkpoints, the
-// end). Grains that leave (outlets, the domain exit) are removed here by stream compaction, only
-// their masses, materials and faces coming back; a feed's new grains are placed on the host
-// clear of the few grains near its region (brought back) and appended here. Written once;
-// dem/resident_dem_host.cpp instantiates it for the host's threads (what CI runs),
-// exec/cuda_instantiations.cu for a CUDA device.
+// (WallSlotLoad). Rigid bodies are obstacles (their contact spheres uploaded when they move,
+// found through a cell grid of the spheres, each body's load folded here: BodySlotLoad), and
+// clumps of grains step here (ClumpKickDrift, ClumpSum). Only a few numbers cross to the host
+// in a step: the drift's report, each wall's and body's load and the contact count. The host's
+// DemSolver keeps the parameters, the walls (moved on the host and uploaded when they move), the
+// step and the counters; its grains and slots are brought up to date by publish() (probes that read
+// grains, frames, checkpoints, the end). Grains that leave (outlets, the domain exit) are removed
+// here by stream compaction, only their masses, materials and faces coming back; a feed's new
+// grains are placed on the host clear of the few grains near its region (brought back) and appended
+// here. Written once; dem/resident_dem_host.cpp instantiates it for the host's threads (what CI
+// runs), exec/cuda_instantiations.cu for a CUDA device.
 #include "debrisflow/core/stopwatch.hpp"
+#include "debrisflow/dem/clump_step_k.hpp"
 #include "debrisflow/dem/dem_solver.hpp"
 #include "debrisflow/dem/grain_kick_drift_k.hpp"
 #include "debrisflow/dem/resident_dem_backend.hpp"
@@ -117,6 +120,12 @@ public:
         down_slots(grain_, host_.grain_slots_);
         down_slots(wall_, host_.wall_slots_);
         down_slots(obstacle_, host_.obstacle_slots_);
+        if (clumps_ > 0) {
+            ClumpSet& cl = g_.clumps;
+            down(cl_pos_, cl.pos), down(cl_vel_, cl.vel), down(cl_ang_mom_, cl.ang_mom);
+            down(cl_force_, cl.force), down(cl_torque_, cl.torque), down(cl_orient_, cl.orient);
+            host_.map_clumps(); // members' indices in the grains' present order
+        }
         record_wall_contacts();
         ++copies_to_host_;
     }
@@ -173,6 +182,7 @@ public:
         upload_once();
         keep_.resize(n_);
         Space::for_each(n_, GrainKeepInsideDomain{pos_.data(), faces, keep_.data()});
+        if (clumps_ > 0) return remove_with_clumps(&faces);
         return remove_leavers(&faces);
     }
 
@@ -180,6 +190,7 @@ public:
         upload_once();
         keep_.resize(n_);
         Space::for_each(n_, GrainKeepOutsideBox{pos_.data(), box, keep_.data()});
+        if (clumps_ > 0) return remove_with_clumps(nullptr);
         return remove_leavers(nullptr);
     }
 
@@ -195,9 +206,12 @@ public:
             reverse_start_.bytes() + keys_.bytes() + order_.bytes() + start_cells_.bytes() +
             table_.bytes() + prims_.bytes() + wall_states_.bytes() + active_.bytes() +
             bounds_.bytes() + bin_start_.bytes() + bin_items_.bytes() + bin_always_.bytes() +
-            vec_scratch_.bytes() + real_scratch_.bytes() + index_scratch_.bytes() +
-            key_scratch_.bytes() + byte_scratch_.bytes() + keep_.bytes() + leave_.bytes() +
-            at_.bytes();
+            cl_pos_.bytes() + cl_vel_.bytes() + cl_ang_mom_.bytes() + cl_force_.bytes() +
+            cl_torque_.bytes() + cl_inv_inertia_.bytes() + cl_offset_.bytes() + cl_orient_.bytes() +
+            cl_mass_.bytes() + cl_first_.bytes() + cl_member_.bytes() + clump_of_.bytes() +
+            index_of_id_.bytes() + vec_scratch_.bytes() + real_scratch_.bytes() +
+            index_scratch_.bytes() + key_scratch_.bytes() + byte_scratch_.bytes() + keep_.bytes() +
+            leave_.bytes() + at_.bytes();
         return b + sorter_.bytes() + reverse_sorter_.bytes() + sphere_sorter_.bytes();
     }
     long copies_to_host() const override { return copies_to_host_; }
@@ -230,6 +244,15 @@ private:
         up_slots(wall_, host_.wall_slots_);
         up_slots(obstacle_, host_.obstacle_slots_);
         rolling_ = host_.grain_slots_.rolling_;
+        const ClumpSet& cl = g_.clumps;
+        clumps_ = cl.size();
+        if (clumps_ > 0) {
+            up(cl_pos_, cl.pos), up(cl_vel_, cl.vel), up(cl_ang_mom_, cl.ang_mom);
+            up(cl_force_, cl.force), up(cl_torque_, cl.torque), up(cl_orient_, cl.orient);
+            up(cl_mass_, cl.mass), up(cl_inv_inertia_, cl.inv_inertia), up(cl_first_, cl.first);
+            up(cl_member_, cl.member_id), up(cl_offset_, cl.offset);
+            up(clump_of_, host_.clump_of_id_), up(index_of_id_, host_.index_of_id_);
+        }
         up(table_, host_.table_);
         upload_faces();
         // the grid's box as at the host's last rebuild (its periodic lengths give separations)
@@ -272,6 +295,48 @@ private:
         rebuild();
         return out;
     }
+    // Grains leaving with clumps among them (rare: a clump leaves whole, its members still
+    // inside counted at a face one of them crossed): the grains to the host, removed there as
+    // Outlet::apply and DomainExit::apply remove them (DemSolver::remove_grains), and taken over
+    // again at the next use.
+    Leaving remove_with_clumps(const flow::ExitFaces* faces) {
+        Leaving out;
+        if (Space::first_where(n_, exec::Dropped{keep_.data()}) == n_) return out; // none
+        std::vector<Index> flags(static_cast<std::size_t>(n_));
+        keep_.download(flags.data());
+        publish();
+        std::vector<std::uint8_t> keep(flags.begin(), flags.end());
+        const auto& g = host_.grains();
+        std::vector<int> face(keep.size(), -1);
+        if (faces) {
+            for (std::size_t k = 0; k < keep.size(); ++k) {
+                out.mass_in_set += g.mass[k];
+                if (!keep[k]) face[k] = faces->of_finite(g.pos[k]);
+            }
+        }
+        host_.expand_to_clumps(keep);
+        const ClumpSet& cl = g.clumps;
+        for (Index c = 0; faces && c < cl.size(); ++c) {
+            int crossed = -1;
+            const std::uint32_t b = cl.first[std::size_t(c)], e = cl.first[std::size_t(c) + 1];
+            for (std::uint32_t m = b; m < e; ++m)
+                crossed = std::max(crossed, face[std::size_t(host_.index_of_id(cl.member_id[m]))]);
+            for (std::uint32_t m = b; m < e && crossed >= 0; ++m) {
+                int& f = face[std::size_t(host_.index_of_id(cl.member_id[m]))];
+                if (f < 0) f = crossed;
+            }
+        }
+        for (std::size_t k = 0; k < keep.size(); ++k) {
+            if (keep[k] || (faces && face[k] < 0)) continue; // not finite: the health check
+            out.mass.push_back(g.mass[k]);
+            out.material.push_back(g.material[k]);
+            if (faces) out.face.push_back(face[k]);
+        }
+        host_.remove_grains(keep);
+        reload();
+        return out;
+    }
+
     // The contact loads of the last evaluation on the walls that keep them (a pressure map
     // reads them), in grain and slot order as the host's slot pass records them: each touching
     // wall slot's force and point, brought to the host once per evaluation when asked for.
@@ -361,11 +426,27 @@ private:
 
     void kick_drift(Real h) {
         ScopedTimer timer(t_integration_);
-        const GrainKickDrift move{view(),       hot_.data(), nullptr, h, host_.params_.dim == 2,
-                                  host_.domain_};
+        const bool plane = host_.params_.dim == 2;
+        const GrainKickDrift move{view(), hot_.data(), clump_of(), h, plane, host_.domain_};
         const DriftReport moved = Space::template fold<DriftReport>(n_, move);
-        if (moved.outside > 0 || !std::isfinite(moved.vmax2)) host_.bad_ = true;
-        host_.drift_ += h * (std::sqrt(moved.vmax2) + host_.walls_.max_speed());
+        Real vmax2 = moved.vmax2;
+        if (clumps_ > 0) { // DemSolver::clump_kick_drift
+            const ClumpKickDrift step{
+                clump_view(), view(), hot_.data(), index_of_id_.data(), h, plane, host_.domain_};
+            const DriftReport m = Space::template fold<DriftReport>(clumps_, step);
+            if (m.outside > 0) host_.bad_ = true;
+            vmax2 = vmax2 < m.vmax2 ? m.vmax2 : vmax2;
+        }
+        if (moved.outside > 0 || !std::isfinite(vmax2)) host_.bad_ = true;
+        host_.drift_ += h * (std::sqrt(vmax2) + host_.walls_.max_speed());
+    }
+
+    // --- clumps (DemSolver's clump stepping, dem/clump_step_k.hpp) ------------------------
+    const std::int32_t* clump_of() { return clumps_ > 0 ? clump_of_.data() : nullptr; }
+    ClumpView clump_view() {
+        return {cl_pos_.data(),    cl_vel_.data(),    cl_ang_mom_.data(), cl_force_.data(),
+                cl_torque_.data(), cl_orient_.data(), cl_mass_.data(),    cl_inv_inertia_.data(),
+                cl_first_.data(),  cl_member_.data(), cl_offset_.data()};
     }
 
     // --- the neighbour rebuild (DemSolver::rebuild) ---------------------------------------
@@ -380,12 +461,13 @@ private:
         build_grid();
         if (host_.params_.reorder) {
             permute(n_);
+            if (clumps_ > 0) Space::for_each(n_, IndexOfId{id_.data(), index_of_id_.data()});
             build_grid();
         }
         Space::for_each(n_, LoadHot{view(), hot_.data()});
         const Real skin = host_.search_margin();
-        build_slots(grain_,
-                    GrainCandidates{grid_, pos_.data(), radius_.data(), id_.data(), nullptr, skin});
+        build_slots(grain_, GrainCandidates{grid_, pos_.data(), radius_.data(), id_.data(),
+                                            clump_of(), skin});
         // the active primitives and their boxes, few: on the host, then uploaded
         upload_faces();
         const auto& prims = host_.walls_.primitives();
@@ -602,6 +684,7 @@ private:
         in.g = view();
         in.hot = hot_.data();
         in.acc = acc_.data();
+        in.clump_of = clump_of();
         in.table = table();
         in.gravity = host_.params_.gravity;
         in.h_contact = ends_step ? h : 0;
@@ -632,6 +715,10 @@ private:
         const SlotReport own = Space::template fold<SlotReport>(
             n_, GrainOwnSlots{GrainOwnPass{in}, wall_out_.data(), wall_touching_.data(),
                               obstacle_out_.data(), obstacle_touching_.data(), measure});
+        if (clumps_ > 0) // DemSolver::clump_forces
+            Space::for_each(clumps_,
+                            ClumpSum{clump_view(), view(), index_of_id_.data(),
+                                     host_.params_.gravity, host_.params_.dim == 2, half_kick});
         // each wall's and body's load split over the threads as the host's slot pass splits it
         // (DemSolver::own_slots), so that a moved body and a wall's load repeat it bitwise
         const Index serial_below = DemSolver::parallel_min + 1;
@@ -689,6 +776,14 @@ private:
     Slots grain_, wall_, obstacle_;
     Buffer<Real> slot_out_, wall_out_;
     Buffer<std::uint8_t> slot_touching_, wall_touching_;
+    // clumps of grains (ClumpSet's arrays), each grain id's clump and index
+    Index clumps_ = 0;
+    Buffer<Vec3> cl_pos_, cl_vel_, cl_ang_mom_, cl_force_, cl_torque_, cl_inv_inertia_, cl_offset_;
+    Buffer<rigid::Quat> cl_orient_;
+    Buffer<Real> cl_mass_;
+    Buffer<std::uint32_t> cl_first_, cl_member_;
+    Buffer<std::int32_t> clump_of_;
+    Buffer<Index> index_of_id_;
     // the rigid bodies' contact spheres (version: the ObstacleSet's when uploaded), their
     // cell grid, each grain-sphere slot's evaluation
     Buffer<ObstacleSphere> spheres_;

@@ -200,17 +200,17 @@ namespace {
 // (discs in 2D) with every contact law and rolling model, walls of planes, boxes and triangle
 // meshes (fixed, moving, removed by remove_at), rigid bodies as obstacles (their contact
 // spheres uploaded when they move, each body's load reduced where the grains are, the bodies
-// moved on the host), settling (on the host, before the loop), the domain exit, outlets and
-// grain feeds, every grain probe. Anything else is rejected here, so that `check` rejects it
-// too.
+// moved on the host), clumps of grains (not with a grain feed; one that leaves is removed on
+// the host), settling (on the host, before the loop), the domain exit, outlets and grain feeds,
+// every grain probe. Anything else is rejected here, so that `check` rejects it too.
 void require_backend_supports(const CaseSpec& c) {
     if (c.backend == "host") return;
     const auto no = [&](bool present, const std::string& what) {
         if (present)
             throw InputError(fmt::format(
                 "{}: exec.backend = \"{}\" runs either fluid (with walls, inlets, outlets and "
-                "rigid bodies) or spherical grains (with walls, gates, feeds, outlets, rigid "
-                "bodies and the domain exit) so far; this case has {} (use exec.backend = "
+                "rigid bodies) or grains (with walls, gates, feeds, outlets, rigid bodies, "
+                "clumps and the domain exit) so far; this case has {} (use exec.backend = "
                 "\"host\")",
                 c.exec_origin.at("backend"), c.backend, what));
     };
@@ -218,8 +218,10 @@ void require_backend_supports(const CaseSpec& c) {
     no(c.has_fem(), "FEM solids");
     if (!c.has_dem) return;
     no(!c.fluids.empty(), "both fluid and grains");
+    // a feed's new grains would need the clumps' id maps widened where the grains are
     for (const auto& g : c.dem.grains)
-        no(!g.clump_centers.empty(), "clumps (" + g.origin.block() + ")");
+        no(!g.clump_centers.empty() && !c.dem.feeds.empty(),
+           "clumps (" + g.origin.block() + ") and a grain feed");
 }
 
 } // namespace
