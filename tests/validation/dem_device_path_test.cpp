@@ -30,6 +30,7 @@ struct State {
     double particle_steps = 0;
     flow::ExitTally left; // grains removed at the domain's faces
     long copies_to_host = -1;
+    std::size_t bodies = 0; // rigid bodies still moving at the end (not removed)
 };
 
 State run(const std::string& file, std::vector<std::string> sets, const std::string& pass,
@@ -46,6 +47,8 @@ State run(const std::string& file, std::vector<std::string> sets, const std::str
     s.particle_steps = report.particle_steps;
     s.left = report.grain_exit;
     s.copies_to_host = report.dem_copies_to_host;
+    if (sim.has_bodies())
+        for (const auto& b : sim.bodies().bodies()) s.bodies += b.motion != rigid::Motion::removed;
     auto& dem = sim.grains();
     s.contacts = dem.contacts();
     const auto& g = dem.grains();
@@ -139,6 +142,7 @@ void check_same(const State& host, const State& resident, const std::string& fil
     EXPECT_EQ(host.particle_steps, resident.particle_steps);
     EXPECT_EQ(host.left.count, resident.left.count);
     EXPECT_EQ(host.left.mass, resident.left.mass);
+    EXPECT_EQ(host.bodies, resident.bodies);
     ASSERT_GT(host.contacts, 0);
     EXPECT_EQ(host.contacts, resident.contacts);
     ASSERT_EQ(host.probes.size(), resident.probes.size());
@@ -541,6 +545,73 @@ every = 0.005
     for (std::size_t k = 1; k < rows.back().size(); ++k)
         moved = std::max(moved, std::abs(double(rows.back()[k] - rows.front()[k])));
     EXPECT_GT(moved, 0);
+}
+
+// A steel block falls through the open half of a floor into an outlet, with spheres raining
+// after it, while a bed of spheres rests on the floor's other half: the outlet takes the
+// grains where they are and the block on the host.
+TEST(DemResident, BlockAndSpheresIntoAnOutlet) {
+    const std::string file = test::write_temp_case("resident_block_outlet", R"(
+name = "resident_block_outlet"
+dimensions = 3
+[time]
+end = 0.3
+[output]
+vtk = false
+[domain]
+min = [-0.1, -0.1, -0.3]
+max = [0.3, 0.3, 0.4]
+[dem]
+safety = 0.1
+[[material]]
+name = "glass"
+density = 2500
+kn = 2e4
+restitution = 0.3
+friction = 0.5
+[[material]]
+name = "steel"
+density = 7800
+kn = 2e5
+restitution = 0.3
+friction = 0.5
+[[wall]]
+name = "floor"
+shape = "box"
+material = "glass"
+min = [-0.1, -0.1, -0.05]
+max = [0.1, 0.3, 0]
+[[body]]
+name = "block"
+material = "steel"
+shape = "box"
+min = [0.15, 0.05, 0.05]
+max = [0.21, 0.11, 0.11]
+[rigid]
+contact_spacing = 0.01
+[[grains]]
+name = "bed"
+material = "glass"
+count = 150
+seed = 3
+diameter = 0.01
+region = { shape = "box", min = [-0.08, 0.0, 0.01], max = [0.08, 0.2, 0.08] }
+[[grains]]
+name = "rain"
+material = "glass"
+count = 60
+seed = 4
+diameter = 0.01
+region = { shape = "box", min = [0.13, 0.03, 0.13], max = [0.23, 0.13, 0.2] }
+[[outlet]]
+name = "sink"
+min = [-0.1, -0.1, -0.3]
+max = [0.3, 0.3, -0.1]
+)");
+    std::size_t at_end = 0;
+    const State s = check_resident(file, {}, 0.3, 0.01, &at_end);
+    EXPECT_EQ(s.bodies, 0u); // the block went through the outlet
+    EXPECT_LT(at_end, 210u); // and spheres with it
 }
 
 // A disc on a pendulum and a box joined by a spring fall into a bed of 150 discs (2D,

@@ -265,9 +265,10 @@ RunReport Simulation::run(const RunOptions& opt) {
                     out->tally_fluid(resident_->remove_fluid_inside(out->box()).mass);
                     out->apply(nullptr, nullptr, rigid_.get());
                 } else if (resident_dem_) {
-                    // the grains inside removed where they are
+                    // the grains inside removed where they are, then the bodies on the host
                     const auto left = resident_dem_->remove_inside(out->box());
                     out->tally_grains(left.mass, left.material, dem_->materials());
+                    out->apply(nullptr, nullptr, rigid_.get());
                 } else
                     out->apply(solver_.get(), dem_.get(), rigid_.get());
                 if (out->bodies_removed() > before)
