@@ -614,6 +614,66 @@ max = [0.3, 0.3, -0.1]
     EXPECT_LT(at_end, 210u); // and spheres with it
 }
 
+// A rock feed releases mesh rocks (rigid bodies added during the run) into a box holding a bed
+// of spheres, with spheres falling through the feed's region: the rocks are placed clear of the
+// grains near the region, which come from where the grains are.
+TEST(DemResident, RockFeedOntoABedOfSpheres) {
+    const std::string src = DEBRISFLOW_SOURCE_DIR;
+    const std::string file = test::write_temp_case("resident_rock_feed", fmt::format(R"(
+name = "resident_rock_feed"
+dimensions = 3
+[time]
+end = 0.3
+[output]
+vtk = false
+[domain]
+min = [-0.1, -0.1, -0.1]
+max = [0.7, 0.5, 0.9]
+[rigid]
+dt = 1e-4
+contact_spacing = 0.02
+[[material]]
+name = "rock"
+law = "hertz_mindlin"
+density = 2650
+youngs_modulus = 5e7
+poisson = 0.3
+restitution = 0.3
+friction = 0.4
+[[wall]]
+name = "box"
+shape = "open_tank"
+min = [0.0, 0.0, 0.0]
+max = [0.6, 0.4, 0.8]
+material = "rock"
+[[grains]]
+name = "bed"
+material = "rock"
+count = 300
+seed = 3
+diameter = 0.02
+region = {{ shape = "box", min = [0.02, 0.02, 0.01], max = [0.58, 0.38, 0.1] }}
+[[grains]]
+name = "cloud"
+material = "rock"
+count = 40
+seed = 4
+diameter = 0.02
+region = {{ shape = "box", min = [0.1, 0.1, 0.35], max = [0.5, 0.3, 0.7] }}
+[[feed]]
+name = "rocks"
+material = "rock"
+rocks = ["{0}/cases/shapes/rock_a.stl", "{0}/cases/shapes/rock_b.stl"]
+min = [0.1, 0.1, 0.3]
+max = [0.5, 0.3, 0.7]
+discharge = 2e-3
+size = {{ distribution = "lognormal", d50 = 0.06, sigma = 0.3, min = 0.03, max = 0.09 }}
+)",
+                                                                                     src));
+    const State s = check_resident(file, {}, 0.3, 0.02);
+    EXPECT_GT(s.bodies, 0u); // rocks were released
+}
+
 // A disc on a pendulum and a box joined by a spring fall into a bed of 150 discs (2D,
 // Hertz-Mindlin): bodies with joints, body-wall and body-body contacts (on the host) and
 // body-grain contacts (where the grains are).

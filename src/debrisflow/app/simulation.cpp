@@ -255,8 +255,17 @@ RunReport Simulation::run(const RunOptions& opt) {
                 else
                     f->apply(*dem_, s.t, s.dt);
             }
-            for (auto& f : rock_feeds_)
-                f->apply(*rigid_, dem_ ? &grains_ : nullptr, probe_context().fluid, s.t, s.dt);
+            for (auto& f : rock_feeds_) {
+                // the grains near the feed's region, wherever they are
+                flow::RockFeed::GrainsNear near;
+                if (resident_dem_)
+                    near = [this](const flow::FeedReach& r) {
+                        return resident_dem_->grains_near(r);
+                    };
+                else if (dem_)
+                    near = flow::RockFeed::near_in(grains_);
+                f->apply(*rigid_, near, probe_context().fluid, s.t, s.dt);
+            }
             for (auto& out : outlets_) {
                 const long before = out->bodies_removed();
                 if (resident_) {

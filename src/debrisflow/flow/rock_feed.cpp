@@ -100,7 +100,17 @@ scenario::TriangleMesh RockFeed::make_rock(Real d, Real& ratio) {
     });
 }
 
-void RockFeed::apply(rigid::BodySolver& bodies, const dem::GrainSet* grains,
+RockFeed::GrainsNear RockFeed::near_in(const dem::GrainSet& grains) {
+    return [&grains](const FeedReach& region) {
+        std::vector<std::pair<Vec3, Real>> near;
+        for (std::size_t i = 0; i < grains.pos.size(); ++i)
+            if (region.near(grains.pos[i], grains.radius[i]))
+                near.push_back({grains.pos[i], grains.radius[i]});
+        return near;
+    };
+}
+
+void RockFeed::apply(rigid::BodySolver& bodies, const GrainsNear& grains,
                      const probes::FluidReader* fluid, Real t, Real dt) {
     accrue(t, dt);
     auto volume_of = [](Real d) { return pi * d * d * d / 6; };
@@ -113,10 +123,9 @@ void RockFeed::apply(rigid::BodySolver& bodies, const dem::GrainSet* grains,
         return true;
     };
     std::vector<std::pair<Vec3, Real>> near;
-    if (grains)
-        for (Index i = 0; i < grains->size(); ++i)
-            if (near_region(grains->pos[std::size_t(i)]))
-                near.push_back({grains->pos[std::size_t(i)], grains->radius[std::size_t(i)]});
+    if (grains) // a superset (FeedReach also counts the grain's radius), then this feed's test
+        for (const auto& [p, r] : grains(FeedReach{spec_.min, spec_.max, reach, false}))
+            if (near_region(p)) near.push_back({p, r});
     if (fluid) {
         const Vec3 grow{reach, reach, reach};
         for (const auto& r :

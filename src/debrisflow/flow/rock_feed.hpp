@@ -1,9 +1,13 @@
 #pragma once
 #include "debrisflow/dem/grain_set.hpp"
+#include "debrisflow/flow/feed_reach_k.hpp"
 #include "debrisflow/flow/solid_feed.hpp"
 #include "debrisflow/particles/particle_set.hpp"
 #include "debrisflow/probes/fluid_reader.hpp"
 #include "debrisflow/scenario/stl_mesh.hpp"
+#include <functional>
+#include <utility>
+#include <vector>
 
 namespace debrisflow::rigid {
 class BodySolver;
@@ -25,10 +29,16 @@ class RockFeed : public SolidFeed {
 public:
     RockFeed(const io::FeedSpec& spec, const io::CaseSpec& c);
 
-    // Releases what is owed after a step of dt ending at t; the SPH particles near the region
-    // come from `fluid` (the rows it selects, wherever the particles are).
-    void apply(rigid::BodySolver& bodies, const dem::GrainSet* grains,
+    // The grains (centre, radius) that `reach` may count near a region, in index order:
+    // wherever the grains are (the host's GrainSet, or a resident DEM loop's grains_near).
+    using GrainsNear = std::function<std::vector<std::pair<Vec3, Real>>(const FeedReach&)>;
+    // Releases what is owed after a step of dt ending at t; the grains near the region come
+    // from `grains` (none when empty), the SPH particles from `fluid` (the rows it selects,
+    // wherever the particles are).
+    void apply(rigid::BodySolver& bodies, const GrainsNear& grains,
                const probes::FluidReader* fluid, Real t, Real dt);
+    // The host's grains as a GrainsNear.
+    static GrainsNear near_in(const dem::GrainSet& grains);
 
     // Sphericity of library shape k.
     Real shape_sphericity(std::size_t k) const { return shapes_[k].sphericity; }
