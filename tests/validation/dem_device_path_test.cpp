@@ -382,19 +382,9 @@ every = 0.005
 // Spheres falling into a box onto a floor mapped by pressure panels: the publish before each
 // sample of the map brings back the floor's contact loads of the last evaluation, recorded in
 // the host slot pass's order.
-TEST(DemResident, PressureMapUnderFallingSpheres) {
-    const std::string file = test::write_temp_case("resident_pressure_map", R"(
-name = "resident_pressure_map"
-dimensions = 3
-[time]
-end = 0.15
-[output]
-vtk = false
-[domain]
-min = [-0.01, -0.01, -0.06]
-max = [0.21, 0.21, 0.3]
-[dem]
-safety = 0.1
+// Glass spheres' material and a 0.2 m square glass box: a floor (a box wall, which a pressure
+// map can read) and four side planes.
+constexpr const char* glass_box = R"(
 [[material]]
 name = "glass"
 density = 2500
@@ -431,7 +421,22 @@ shape = "plane"
 material = "glass"
 point = [0, 0.2, 0]
 normal = [0, -1, 0]
-[[grains]]
+)";
+
+TEST(DemResident, PressureMapUnderFallingSpheres) {
+    const std::string file = test::write_temp_case("resident_pressure_map", R"(
+name = "resident_pressure_map"
+dimensions = 3
+[time]
+end = 0.15
+[output]
+vtk = false
+[domain]
+min = [-0.01, -0.01, -0.06]
+max = [0.21, 0.21, 0.3]
+[dem]
+safety = 0.1
+)" + std::string(glass_box) + R"([[grains]]
 name = "spheres"
 material = "glass"
 count = 300
@@ -474,48 +479,12 @@ min = [-0.01, -0.01, -0.06]
 max = [0.21, 0.21, 0.4]
 [dem]
 safety = 0.1
-[[material]]
-name = "glass"
-density = 2500
-kn = 2e4
-restitution = 0.3
-friction = 0.5
-[[material]]
+)" + std::string(glass_box) + R"([[material]]
 name = "steel"
 density = 7800
 kn = 2e5
 restitution = 0.3
 friction = 0.5
-[[wall]]
-name = "floor"
-shape = "box"
-material = "glass"
-min = [0, 0, -0.05]
-max = [0.2, 0.2, 0]
-[[wall]]
-name = "left"
-shape = "plane"
-material = "glass"
-point = [0, 0, 0]
-normal = [1, 0, 0]
-[[wall]]
-name = "right"
-shape = "plane"
-material = "glass"
-point = [0.2, 0, 0]
-normal = [-1, 0, 0]
-[[wall]]
-name = "front"
-shape = "plane"
-material = "glass"
-point = [0, 0, 0]
-normal = [0, 1, 0]
-[[wall]]
-name = "back"
-shape = "plane"
-material = "glass"
-point = [0, 0.2, 0]
-normal = [0, -1, 0]
 [[body]]
 name = "block"
 material = "steel"
