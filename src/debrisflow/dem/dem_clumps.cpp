@@ -26,6 +26,21 @@ void DemSolver::expand_to_clumps(std::vector<std::uint8_t>& keep) const {
     }
 }
 
+void DemSolver::spread_clump_faces(std::vector<int>& face) const {
+    const ClumpSet& cl = grains_.clumps;
+    for (Index c = 0; c < cl.size(); ++c) {
+        const std::size_t b = cl.first[std::size_t(c)], e = cl.first[std::size_t(c) + 1];
+        int crossed = -1;
+        for (std::size_t k = b; k < e; ++k)
+            crossed = std::max(crossed, face[std::size_t(index_of_id_[cl.member_id[k]])]);
+        if (crossed < 0) continue;
+        for (std::size_t k = b; k < e; ++k) {
+            int& f = face[std::size_t(index_of_id_[cl.member_id[k]])];
+            if (f < 0) f = crossed;
+        }
+    }
+}
+
 void DemSolver::map_clumps() {
     const ClumpSet& cl = grains_.clumps;
     if (cl.empty()) {

@@ -64,6 +64,9 @@ public:
     // Clears keep[i] for every member of a clump that has a member with keep[i] == 0: a clump
     // leaves whole. Call before counting what remove_grains will take.
     void expand_to_clumps(std::vector<std::uint8_t>& keep) const;
+    // face[i] (the domain face grain i crossed, or -1) for the members of a clump that crossed
+    // one: its members still inside count at the furthest-numbered face a member crossed.
+    void spread_clump_faces(std::vector<int>& face) const;
     // Removes the grains with keep[i] == 0 (an outlet), with their whole clumps; contact
     // history of the rest is kept.
     void remove_grains(std::vector<std::uint8_t> keep);

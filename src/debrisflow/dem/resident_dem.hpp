@@ -315,17 +315,7 @@ private:
             }
         }
         host_.expand_to_clumps(keep);
-        const ClumpSet& cl = g.clumps;
-        for (Index c = 0; faces && c < cl.size(); ++c) {
-            int crossed = -1;
-            const std::uint32_t b = cl.first[std::size_t(c)], e = cl.first[std::size_t(c) + 1];
-            for (std::uint32_t m = b; m < e; ++m)
-                crossed = std::max(crossed, face[std::size_t(host_.index_of_id(cl.member_id[m]))]);
-            for (std::uint32_t m = b; m < e && crossed >= 0; ++m) {
-                int& f = face[std::size_t(host_.index_of_id(cl.member_id[m]))];
-                if (f < 0) f = crossed;
-            }
-        }
+        if (faces) host_.spread_clump_faces(face);
         for (std::size_t k = 0; k < keep.size(); ++k) {
             if (keep[k] || (faces && face[k] < 0)) continue; // not finite: the health check
             out.mass.push_back(g.mass[k]);

@@ -127,22 +127,7 @@ std::string DomainExit::apply(sph::SphSolver* fluid, dem::DemSolver* grains, Rea
         if (any) {
             // a clump leaves whole: its members still inside count at a face one of them crossed
             grains->expand_to_clumps(keep);
-            const auto& cl = g.clumps;
-            if (!cl.empty()) {
-                auto where = [&](std::uint32_t id) { return grains->index_of_id(id); };
-                for (Index c = 0; c < cl.size(); ++c) {
-                    const std::size_t b = cl.first[std::size_t(c)],
-                                      e = cl.first[std::size_t(c) + 1];
-                    int crossed = -1;
-                    for (std::size_t m = b; m < e; ++m)
-                        crossed = std::max(crossed, face[std::size_t(where(cl.member_id[m]))]);
-                    if (crossed < 0) continue;
-                    for (std::size_t m = b; m < e; ++m) {
-                        int& f = face[std::size_t(where(cl.member_id[m]))];
-                        if (f < 0) f = crossed;
-                    }
-                }
-            }
+            grains->spread_clump_faces(face);
             std::vector<Leaver> leavers;
             for (Index i = 0; i < n; ++i) {
                 const std::size_t k = std::size_t(i);
