@@ -4,8 +4,8 @@
 # random sizes; clumps; the granular flume; the column, the clumps and the flume on the resident DEM loop), rigid-body cases (a block sliding in water; the
 # reduced container case; a hinged disc and a box on a spring falling into grains, on the host's
 # DEM loop and on the resident one; mesh rocks
-# from a feed) and coupled cases (FEM alone, SPH-FEM, SPH-DEM drag, the
-# SPH-DEM-FEM retaining dam), a run to T and the same run restarted from its checkpoint near
+# from a feed) and coupled cases (FEM alone, SPH-FEM, SPH-DEM drag on the host's loops and on
+# the resident ones, the SPH-DEM-FEM retaining dam), a run to T and the same run restarted from its checkpoint near
 # T/2 write byte-identical probe files, VTK frames and final state (the final checkpoint holds
 # every array), at the same thread count. Also: a stop by SIGTERM writes a checkpoint to
 # continue from; a kill while a checkpoint is written leaves the previous one usable; damaged,
@@ -69,6 +69,7 @@ rock_feed $inputs/restart_rock_feed3d.toml 0.6
 fem_cantilever $src/cases/fem/cantilever_steel.toml 0.02
 sph_fem_elastic_gate $src/cases/fem/elastic_gate2d.toml 0.06
 sph_dem_drag_settling $src/cases/coupling/settling_grain.toml 0.1
+sph_dem_drag_settling_resident $src/cases/coupling/settling_grain.toml 0.1 --backend host_resident
 sph_dem_fem_retaining_dam $src/cases/papers/retaining_dam.toml 0.1
 CASES
 gate="$inputs/restart_gate_sps2d.toml"

@@ -66,7 +66,7 @@ int check(const std::string& file, const std::vector<std::string>& sets) {
                                  spec.dem.params.dt > 0 ? "user" : "automatic", d.automatic_dt().dt,
                                  d.automatic_dt().limiter, d.stability_dt().dt,
                                  spec.dem.params.subcycle ? ", sub-cycled" : "");
-        if (!sim.has_fluid())
+        if (!sim.has_fluid() || spec.backend != "host")
             std::cout << fmt::format("backend: {}\n", dem::backend_words(spec.backend));
     }
     if (sim.has_bodies()) {

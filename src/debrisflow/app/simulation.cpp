@@ -85,6 +85,8 @@ Simulation::Simulation(io::CaseSpec spec)
         if (spec_.backend != "host")
             resident_dem_ =
                 dem::make_resident_dem(spec_.backend, *dem_, spec_.exec_origin.at("backend"));
+        if (sph_dem_ && resident_ && resident_dem_) // where the particles and grains are
+            resident_sph_dem_ = resident_dem_->couple_fluid(*resident_, *sph_dem_);
     }
     wall_removed_.assign(spec_.walls.size(), 0);
     for (const auto& in : spec_.inlets) {
@@ -199,8 +201,10 @@ RunReport Simulation::run(const RunOptions& opt) {
     time::Phase* sph_phase = resident_ ? static_cast<time::Phase*>(resident_.get()) : solver_.get();
     time::Phase* dem_phase =
         resident_dem_ ? static_cast<time::Phase*>(resident_dem_.get()) : dem_.get();
+    time::Phase* sph_dem_phase =
+        resident_sph_dem_ ? resident_sph_dem_.get() : static_cast<time::Phase*>(sph_dem_.get());
     for (time::Phase* p :
-         coupling::force_order({sph_phase, dem_phase, sph_dem_.get(), rigid_.get(), fem_.get()}))
+         coupling::force_order({sph_phase, dem_phase, sph_dem_phase, rigid_.get(), fem_.get()}))
         integ.add_phase(p);
     integ.set_reorder_every(solver_ ? spec_.sph.reorder_every : 1);
     // Cases without fluid take one force evaluation per step (velocity Verlet in the DEM and
@@ -268,15 +272,16 @@ RunReport Simulation::run(const RunOptions& opt) {
             }
             for (auto& out : outlets_) {
                 const long before = out->bodies_removed();
-                if (resident_) {
-                    // the fluid where it is; the bodies on the host, their particles released
-                    // where they are (sph/resident_bodies.hpp)
-                    out->tally_fluid(resident_->remove_fluid_inside(out->box()).mass);
-                    out->apply(nullptr, nullptr, rigid_.get());
-                } else if (resident_dem_) {
-                    // the grains inside removed where they are, then the bodies on the host
-                    const auto left = resident_dem_->remove_inside(out->box());
-                    out->tally_grains(left.mass, left.material, dem_->materials());
+                if (resident_ || resident_dem_) {
+                    // the fluid and the grains inside removed where they are, then the bodies
+                    // on the host, their particles released where they are
+                    // (sph/resident_bodies.hpp)
+                    if (resident_)
+                        out->tally_fluid(resident_->remove_fluid_inside(out->box()).mass);
+                    if (resident_dem_) {
+                        const auto left = resident_dem_->remove_inside(out->box());
+                        out->tally_grains(left.mass, left.material, dem_->materials());
+                    }
                     out->apply(nullptr, nullptr, rigid_.get());
                 } else
                     out->apply(solver_.get(), dem_.get(), rigid_.get());
@@ -293,23 +298,25 @@ RunReport Simulation::run(const RunOptions& opt) {
     if (domain_exit_.removes())
         integ.add_hook(time::Hook::after_integration, [this](const time::StepInfo& s) {
             // a resident phase finds and removes its leavers where its particles are
-            if (resident_) {
-                const auto left = resident_->remove_fluid_outside(domain_exit_.faces());
-                if (left.face.empty()) return;
-                const std::string note = domain_exit_.tally_fluid(
-                    flow::DomainExit::leavers(left.face, left.mass), left.mass_in_set, s.t);
-                if (!note.empty()) log_.line(note);
-                return;
-            }
-            if (resident_dem_) {
+            if (resident_ || resident_dem_) {
+                if (resident_) {
+                    const auto left = resident_->remove_fluid_outside(domain_exit_.faces());
+                    if (!left.face.empty()) {
+                        const std::string note = domain_exit_.tally_fluid(
+                            flow::DomainExit::leavers(left.face, left.mass), left.mass_in_set, s.t);
+                        if (!note.empty()) log_.line(note);
+                    }
+                }
                 // the drift flags a step after which a grain may be outside: then the leavers
                 // are removed where they are
-                if (!dem_->may_have_left()) return;
-                const auto left = resident_dem_->remove_outside(domain_exit_.faces());
-                if (left.mass.empty()) return;
-                const std::string note = domain_exit_.tally_grains(
-                    flow::DomainExit::leavers(left.face, left.mass), left.mass_in_set, s.t);
-                if (!note.empty()) log_.line(note);
+                if (resident_dem_ && dem_->may_have_left()) {
+                    const auto left = resident_dem_->remove_outside(domain_exit_.faces());
+                    if (!left.mass.empty()) {
+                        const std::string note = domain_exit_.tally_grains(
+                            flow::DomainExit::leavers(left.face, left.mass), left.mass_in_set, s.t);
+                        if (!note.empty()) log_.line(note);
+                    }
+                }
                 return;
             }
             const std::string note = domain_exit_.apply(solver_.get(), dem_.get(), s.t);

@@ -118,9 +118,10 @@ private:
     std::unique_ptr<dem::ResidentDemPhase> resident_dem_;
     std::unique_ptr<rigid::BodySolver> rigid_;
     std::unique_ptr<fem::FemSolver> fem_;
-    std::unique_ptr<coupling::SphFemCoupling> sph_fem_;   // with a fluid
-    std::unique_ptr<coupling::DemFemCoupling> dem_fem_;   // with grains or bodies
-    std::unique_ptr<coupling::SphDemCoupling> sph_dem_;   // grains in a fluid ([dem] fluid_drag)
+    std::unique_ptr<coupling::SphFemCoupling> sph_fem_; // with a fluid
+    std::unique_ptr<coupling::DemFemCoupling> dem_fem_; // with grains or bodies
+    std::unique_ptr<coupling::SphDemCoupling> sph_dem_; // grains in a fluid ([dem] fluid_drag)
+    std::unique_ptr<time::Phase> resident_sph_dem_; // the same where a resident backend keeps them
     std::unique_ptr<coupling::DemBodyCoupling> dem_body_; // grains and bodies
     std::unique_ptr<coupling::SphBodyCoupling> sph_body_; // bodies in a fluid
     bool settled_ = false;

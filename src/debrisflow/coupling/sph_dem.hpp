@@ -1,12 +1,14 @@
 #pragma once
 #include "debrisflow/coupling/coupling.hpp"
 #include "debrisflow/coupling/drag_laws_k.hpp"
+#include "debrisflow/coupling/sph_dem_k.hpp"
 #include "debrisflow/dem/dem_solver.hpp"
 #include "debrisflow/dem/fluid_load.hpp"
 #include "debrisflow/neighbors/cell_grid.hpp"
 #include "debrisflow/sph/sph_solver.hpp"
 #include "debrisflow/time/phase.hpp"
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace debrisflow::checkpoint {
@@ -61,7 +63,24 @@ public:
     // (coupling/coupling_checkpoint.cpp).
     void state(checkpoint::Archive& ar);
 
+    // Calls f(kernel, Drag{}) with the fluid's kernel and the chosen drag law; returns its
+    // result (GrainFluidSample is made for these two).
+    template <class F> Real with_models(F&& f) const {
+        Real out = 0;
+        std::visit(
+            [&](const auto& kernel_model) {
+                // A copy captured by value: clang 14 rejects the enclosing generic lambda's
+                // parameter inside the nested lambda below.
+                const auto kernel = kernel_model;
+                DragRegistry::visit_name(drag_law_,
+                                         [&, kernel]<class Drag>() { out = f(kernel, Drag{}); });
+            },
+            fluid_.models().kernel);
+        return out;
+    }
+
 private:
+    template <class Space> friend class ResidentSphDem;
     void interpolate();
     void apply_reaction();
 

@@ -34,10 +34,15 @@
 #include <utility>
 #include <vector>
 
+namespace debrisflow::coupling {
+template <class Space> class ResidentSphDem;
+}
+
 namespace debrisflow::dem {
 
 template <class Space> class ResidentDem final : public ResidentDemPhase {
     template <class T> using Buffer = typename Space::template Buffer<T>;
+    friend class coupling::ResidentSphDem<Space>;
 
     // One kind of contact slots (grain-grain or grain-wall) with the rows of the last rebuild
     // (old_*), which the next rebuild carries the history from (ContactSlots on the host).
@@ -120,6 +125,11 @@ public:
         down_slots(grain_, host_.grain_slots_);
         down_slots(wall_, host_.wall_slots_);
         down_slots(obstacle_, host_.obstacle_slots_);
+        if (FluidLoad* f = host_.fluid_) {
+            down(fl_force_, f->force), down(fl_u_, f->u), down(fl_beta_, f->beta);
+            down(fl_impulse_, f->impulse), down(fl_felt_, f->felt);
+            down(fl_handover_, f->handover);
+        }
         if (clumps_ > 0) {
             ClumpSet& cl = g_.clumps;
             down(cl_pos_, cl.pos), down(cl_vel_, cl.vel), down(cl_ang_mom_, cl.ang_mom);
@@ -131,6 +141,10 @@ public:
     }
 
     void reload() override { resident_ = false; }
+
+    // Defined with the coupling (coupling/resident_sph_dem.hpp).
+    std::unique_ptr<time::Phase> couple_fluid(sph::ResidentPhase& fluid,
+                                              coupling::SphDemCoupling& coupling) override;
 
     Index size() const override { return resident_ ? n_ : g_.size(); }
 
@@ -161,6 +175,12 @@ public:
         tail(mass_, fresh.mass), tail(inv_mass_, fresh.inv_mass);
         tail(inv_inertia_, fresh.inv_inertia), tail(material_, fresh.material);
         tail(id_, fresh.id);
+        if (host_.fluid_) { // new grains start without a fluid load, as on the host
+            const std::vector<Vec3> none(static_cast<std::size_t>(m));
+            for (auto* a : {&fl_force_, &fl_u_, &fl_impulse_, &fl_felt_, &fl_handover_})
+                tail(*a, none);
+            tail(fl_beta_, std::vector<Real>(static_cast<std::size_t>(m), Real(0)));
+        }
         for (Slots* s : {&grain_, &wall_, &obstacle_}) {
             if (s->count.size() != held) continue; // never built: nothing to carry
             const Index slots = (held + m) * s->cap;
@@ -198,11 +218,13 @@ public:
         std::size_t b =
             pos_.bytes() + vel_.bytes() + spin_.bytes() + force_.bytes() + torque_.bytes() +
             radius_.bytes() + mass_.bytes() + inv_mass_.bytes() + inv_inertia_.bytes() +
-            material_.bytes() + id_.bytes() + hot_.bytes() + acc_.bytes() + grain_.bytes() +
-            wall_.bytes() + obstacle_.bytes() + spheres_.bytes() + obstacle_out_.bytes() +
-            obstacle_touching_.bytes() + sphere_keys_.bytes() + sphere_order_.bytes() +
-            sphere_starts_.bytes() + slot_out_.bytes() + slot_touching_.bytes() +
-            wall_out_.bytes() + wall_touching_.bytes() + reverse_key_.bytes() + reverse_.bytes() +
+            material_.bytes() + id_.bytes() + hot_.bytes() + acc_.bytes() + fl_force_.bytes() +
+            fl_u_.bytes() + fl_impulse_.bytes() + fl_felt_.bytes() + fl_handover_.bytes() +
+            fl_beta_.bytes() + grain_.bytes() + wall_.bytes() + obstacle_.bytes() +
+            spheres_.bytes() + obstacle_out_.bytes() + obstacle_touching_.bytes() +
+            sphere_keys_.bytes() + sphere_order_.bytes() + sphere_starts_.bytes() +
+            slot_out_.bytes() + slot_touching_.bytes() + wall_out_.bytes() +
+            wall_touching_.bytes() + reverse_key_.bytes() + reverse_.bytes() +
             reverse_start_.bytes() + keys_.bytes() + order_.bytes() + start_cells_.bytes() +
             table_.bytes() + prims_.bytes() + wall_states_.bytes() + active_.bytes() +
             bounds_.bytes() + bin_start_.bytes() + bin_items_.bytes() + bin_always_.bytes() +
@@ -229,6 +251,11 @@ private:
         up(torque_, g_.torque), up(radius_, g_.radius), up(mass_, g_.mass);
         up(inv_mass_, g_.inv_mass), up(inv_inertia_, g_.inv_inertia);
         up(material_, g_.material), up(id_, g_.id);
+        if (FluidLoad* f = host_.fluid_) {
+            f->resize(std::size_t(n_));
+            up(fl_force_, f->force), up(fl_u_, f->u), up(fl_beta_, f->beta);
+            up(fl_impulse_, f->impulse), up(fl_felt_, f->felt), up(fl_handover_, f->handover);
+        }
         if (host_.hot_.size() == std::size_t(n_)) {
             up(hot_, host_.hot_);
         } else {
@@ -526,6 +553,11 @@ private:
         for (auto* a : {&radius_, &mass_, &inv_mass_, &inv_inertia_}) gather(*a, real_scratch_, 1);
         gather(material_, byte_scratch_, 1);
         gather(id_, key_scratch_, 1);
+        if (host_.fluid_) { // the fluid loads follow their grains (FluidLoad::permute)
+            for (auto* a : {&fl_force_, &fl_u_, &fl_impulse_, &fl_felt_, &fl_handover_})
+                gather(*a, vec_scratch_, 1);
+            gather(fl_beta_, real_scratch_, 1);
+        }
         for (Slots* s : {&grain_, &wall_, &obstacle_}) {
             if (s->count.size() != held) continue; // never built: nothing to carry
             const int cap = int(s->cap);
@@ -697,6 +729,13 @@ private:
         in.obstacle_xi = obstacle_.xi.data();
         in.obstacle_roll = rolling_ ? obstacle_.mroll.data() : nullptr;
         in.obstacle_capacity = obstacle_.cap;
+        if (host_.fluid_) {
+            in.fluid_force = fl_force_.data();
+            in.fluid_u = fl_u_.data();
+            in.fluid_beta = fl_beta_.data();
+            in.fluid_impulse = ends_step ? fl_impulse_.data() : nullptr;
+            in.fluid_felt = fl_felt_.data();
+        }
         const Index wslots = n_ * wall_.cap, oslots = bodies ? n_ * obstacle_.cap : 0;
         wall_out_.resize(9 * wslots);
         wall_touching_.resize(wslots);
@@ -746,6 +785,7 @@ private:
             }
             o->time += h;
         }
+        if (host_.fluid_ && ends_step) host_.fluid_->time += h;
         host_.contacts_ = gg.touching + own.touching;
         host_.sum_contact_force_ = measure ? gg.force_sum + own.force_sum : 0;
     }
@@ -762,6 +802,9 @@ private:
     Buffer<std::uint32_t> id_;
     Buffer<GrainState> hot_;
     Buffer<Real> acc_;
+    // a surrounding fluid's load on each grain (FluidLoad's arrays), with a fluid only
+    Buffer<Vec3> fl_force_, fl_u_, fl_impulse_, fl_felt_, fl_handover_;
+    Buffer<Real> fl_beta_;
     // contact slots, each slot's evaluation, the reverse index
     Slots grain_, wall_, obstacle_;
     Buffer<Real> slot_out_, wall_out_;

@@ -15,6 +15,13 @@
 #include <utility>
 #include <vector>
 
+namespace debrisflow::coupling {
+class SphDemCoupling;
+}
+namespace debrisflow::sph {
+class ResidentPhase;
+}
+
 namespace debrisflow::dem {
 
 class DemSolver;
@@ -53,6 +60,12 @@ public:
     // DemSolver::grains_added: empty slot rows, the search margin and step widened for their
     // sizes, a neighbour rebuild.
     virtual void append(const GrainSet& fresh) = 0;
+    // The unresolved SPH-DEM coupling of these grains with the resident `fluid` (of the same
+    // backend), as a phase that replaces the host's `coupling` in the time loop and works
+    // where the grains and particles are; the host's coupling keeps the drag law and the
+    // scalars (coupling/resident_sph_dem.hpp).
+    virtual std::unique_ptr<time::Phase> couple_fluid(sph::ResidentPhase& fluid,
+                                                      coupling::SphDemCoupling& coupling) = 0;
 };
 
 // How `check` and the log name where the DEM phase runs on `backend`.

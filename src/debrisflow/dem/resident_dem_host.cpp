@@ -1,6 +1,7 @@
 // The resident DEM loop on the host's memory and threads (exec.backend = "host_resident"), and
 // the choice of backend for the DEM phase.
 #include "debrisflow/core/error.hpp"
+#include "debrisflow/coupling/resident_sph_dem.hpp"
 #include "debrisflow/dem/resident_dem.hpp"
 #include "debrisflow/exec/backend_choice.hpp"
 #include "debrisflow/exec/host_space.hpp"

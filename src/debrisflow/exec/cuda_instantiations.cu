@@ -2,7 +2,7 @@
 // kernel, so that every per-pair rule stays device-callable, and the resident SPH and DEM loops
 // on the device (exec.backend = "cuda"). No GPU is needed to compile this file.
 #include "debrisflow/core/error.hpp"
-#include "debrisflow/coupling/drag_laws_k.hpp"
+#include "debrisflow/coupling/resident_sph_dem.hpp"
 #include "debrisflow/dem/contact_slots.hpp"
 #include "debrisflow/dem/grain_kick_drift_k.hpp"
 #include "debrisflow/dem/grain_own_pass_k.hpp"
@@ -55,19 +55,6 @@ template <class K> void instantiate_kernel() {
     instantiate_interaction<K, models::ArtificialViscosity, models::MolteniColagrossi>();
 }
 
-// The grain-grain contact of one slot exactly as DemSolver::forces evaluates it
-// (dem/grain_slot_contact_k.hpp: periodic separation, history, every law and rolling model):
-// the same functor bench/gpu/gpu_dem_contacts launches. The DEM phase has no device loop yet
-// (issue #34); no second copy of its contact pass is kept here.
-// Drag coefficients of the unresolved SPH-DEM coupling, one grain per thread.
-template <class Drag> struct GrainDrag {
-    const Real *d, *rho, *mu, *slip, *eps;
-    Real* beta;
-    DF_HD void operator()(Index i) const {
-        beta[i] = Drag::beta({d[i], rho[i], mu[i], slip[i], eps[i]});
-    }
-};
-
 // A per-particle quantity that a loop reduces over (the stable step, the health check),
 // evaluated on the device into an array.
 template <class F> struct Evaluate {
@@ -113,9 +100,8 @@ void instantiate_all() {
     // what the SPH probes reduce over (probes/fluid_samples_k.hpp)
     launch_evaluate<probes::FrontCoordinate>();
     launch_evaluate<probes::WallParticleLoad>();
+    // the grain-grain contact of one slot as bench/gpu/gpu_dem_contacts launches it
     launch(0, dem::GrainSlotContact{});
-    launch(0, GrainDrag<coupling::DiFelice>{});
-    launch(0, GrainDrag<coupling::SchillerNaumann>{});
     instantiate_kernel<kernels::WendlandC2>();
     instantiate_kernel<kernels::CubicSpline>();
 }
@@ -149,6 +135,6 @@ void register_backend() {
 } // namespace debrisflow::cuda
 
 // The SPH and DEM phases' time loops resident on the device (sph/resident_sph.hpp,
-// dem/resident_dem.hpp).
+// dem/resident_dem.hpp), and with them their SPH-DEM coupling (coupling/resident_sph_dem.hpp).
 template class debrisflow::sph::ResidentSph<debrisflow::exec::CudaSpace>;
 template class debrisflow::dem::ResidentDem<debrisflow::exec::CudaSpace>;

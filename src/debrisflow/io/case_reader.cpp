@@ -202,22 +202,23 @@ namespace {
 // spheres uploaded when they move, each body's load reduced where the grains are, the bodies
 // moved on the host), clumps of grains (not with a grain feed; one that leaves is removed on
 // the host), settling (on the host, before the loop), the domain exit, outlets and grain feeds,
-// every grain probe. Anything else is rejected here, so that `check` rejects it too.
+// every grain probe. Fluid and grains together, with their unresolved coupling
+// (coupling/resident_sph_dem.hpp). Anything else is rejected here, so that `check` rejects it
+// too.
 void require_backend_supports(const CaseSpec& c) {
     if (c.backend == "host") return;
     const auto no = [&](bool present, const std::string& what) {
         if (present)
             throw InputError(fmt::format(
-                "{}: exec.backend = \"{}\" runs either fluid (with walls, inlets, outlets and "
-                "rigid bodies) or grains (with walls, gates, feeds, outlets, rigid bodies, "
-                "clumps and the domain exit) so far; this case has {} (use exec.backend = "
-                "\"host\")",
+                "{}: exec.backend = \"{}\" runs fluid (with walls, inlets, outlets and rigid "
+                "bodies) and grains (with walls, gates, feeds, outlets, rigid bodies, clumps, "
+                "the domain exit and the fluid's drag) so far; this case has {} (use "
+                "exec.backend = \"host\")",
                 c.exec_origin.at("backend"), c.backend, what));
     };
     no(c.fluids.empty() && !c.has_dem, "neither fluid nor grains");
     no(c.has_fem(), "FEM solids");
     if (!c.has_dem) return;
-    no(!c.fluids.empty(), "both fluid and grains");
     // a feed's new grains would need the clumps' id maps widened where the grains are
     for (const auto& g : c.dem.grains)
         no(!g.clump_centers.empty() && !c.dem.feeds.empty(),

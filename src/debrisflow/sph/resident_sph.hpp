@@ -30,12 +30,17 @@
 #include <type_traits>
 #include <variant>
 
+namespace debrisflow::coupling {
+template <class Space> class ResidentSphDem;
+}
+
 namespace debrisflow::sph {
 
 template <class Space> class ResidentSph final : public ResidentPhase {
     template <class T> using Buffer = typename Space::template Buffer<T>;
     friend class ResidentBodies<Space>;
     friend class ResidentFluidReader<Space>;
+    friend class coupling::ResidentSphDem<Space>;
 
 public:
     // Takes over the host solver's particles at the first neighbour search; the host solver
