@@ -2,7 +2,7 @@
 # The prepared device check of the resident DEM loop (issue #34), for a session that has a GPU:
 # one call, a few minutes. Builds the CLI with the CUDA backend; runs the reduced flume, the
 # type-A slit dam and box100k with --backend cuda and with --backend host_resident and compares
-# their probes (tools/compare_probes.py); then times box100k scaled to 1 M and 6 M grains
+# their probes (tools/compare_probes.py), and grains in water (the SPH-DEM coupling); then times box100k scaled to 1 M and 6 M grains
 # (200 steps each) on the device and box100k on the host's cores (default loop and resident
 # loop). Prints the figures that go into docs/performance.md; writes its runs under $OUT (or
 # /tmp). Written without a GPU: it has not run yet.
@@ -44,6 +44,28 @@ for run in flume/flume30_reduced.toml:0.02: papers/slit_dam_dem/typeA.toml:0.03:
     report "cuda, $name" "$out/${name}_cuda"
     python3 tools/compare_probes.py "$out/${name}_host_resident" "$out/${name}_cuda" \
         --tolerance 1e-6 || echo "DIFFERENCE: $name on the device differs beyond 1e-6"
+done
+
+# Grains in water, both phases and their drag coupling on the device
+# (coupling/resident_sph_dem.hpp): the benchmark tank at dp = 20 mm with 800 grains packed above
+# its floor (the case of ResidentBackend.GrainsInWater), the final grains compared; then the
+# whole tank (64,000 fluid particles, 5,000 grains) timed on the device and on the host.
+tank=cases/bench/sph_dem_tank.toml
+small=(--set dp=0.02 --set grains.0.count=800 --set time.end=0.05
+    --set 'grains.0.region={shape="box", min=[0.1,0.1,0.0], max=[0.16,0.16,0.03]}')
+for b in host_resident cuda; do
+    "$exe" run $tank --out "$out/tank_small_$b" --backend $b "${small[@]}" "${common[@]}"
+done
+python3 - "$out/tank_small_host_resident" "$out/tank_small_cuda" <<'PY' || echo "DIFFERENCE: tank"
+import csv, sys
+rows = [list(csv.reader(open(d + "/grains_final.csv")))[1:] for d in sys.argv[1:]]
+worst = max(abs(float(a[k]) - float(b[k])) for a, b in zip(*rows) for k in range(3))
+print(f"tank, 800 grains in water: largest position difference {worst:.3e} m (cuda vs host_resident)")
+sys.exit(0 if worst < 1e-6 else 1)
+PY
+for b in cuda host; do
+    "$exe" run $tank --out "$out/tank_$b" --backend $b "${common[@]}"
+    report "$b, sph_dem_tank (64,000 particles, 5,000 grains), 0.01 s" "$out/tank_$b"
 done
 
 # Throughput: box100k's lattice of 10 mm spheres scaled (grains = 100 x 100 x 100, 200 x 200 x
