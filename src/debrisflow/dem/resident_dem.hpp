@@ -192,6 +192,13 @@ public:
             if (s->mroll.size() > 0) s->mroll.resize(slots);
         }
         n_ = held + m;
+        if (clumps_ > 0) { // the new ids in no clump, and where they are (DemSolver::map_clumps)
+            const Index ids = Index(fresh.next_id()), had = clump_of_.size();
+            clump_of_.resize(ids);
+            index_of_id_.resize(ids);
+            Space::for_each(ids - had, FillWith<std::int32_t>{clump_of_.data() + had, -1});
+            Space::for_each(n_, IndexOfId{id_.data(), index_of_id_.data()});
+        }
         hot_.resize(n_); // filled by the rebuild
         host_.include_sizes(fresh);
         host_.evaluated_ = false;

@@ -200,11 +200,10 @@ namespace {
 // (discs in 2D) with every contact law and rolling model, walls of planes, boxes and triangle
 // meshes (fixed, moving, removed by remove_at), rigid bodies as obstacles (their contact
 // spheres uploaded when they move, each body's load reduced where the grains are, the bodies
-// moved on the host), clumps of grains (not with a grain feed; one that leaves is removed on
-// the host), settling (on the host, before the loop), the domain exit, outlets and grain feeds,
-// every grain probe. Fluid and grains together, with their unresolved coupling
-// (coupling/resident_sph_dem.hpp). Anything else is rejected here, so that `check` rejects it
-// too.
+// moved on the host), clumps of grains (one that leaves is removed on the host), settling (on the
+// host, before the loop), the domain exit, outlets and grain feeds, every grain probe. Fluid and
+// grains together, with their unresolved coupling (coupling/resident_sph_dem.hpp). Anything else is
+// rejected here, so that `check` rejects it too.
 void require_backend_supports(const CaseSpec& c) {
     if (c.backend == "host") return;
     const auto no = [&](bool present, const std::string& what) {
@@ -212,17 +211,12 @@ void require_backend_supports(const CaseSpec& c) {
             throw InputError(fmt::format(
                 "{}: exec.backend = \"{}\" runs fluid (with walls, inlets, outlets and rigid "
                 "bodies) and grains (with walls, gates, feeds, outlets, rigid bodies, clumps, "
-                "the domain exit and the fluid's drag) so far; this case has {} (use "
-                "exec.backend = \"host\")",
+                "the domain exit and the fluid's drag) so far, not FEM solids; this case has {} "
+                "(use exec.backend = \"host\")",
                 c.exec_origin.at("backend"), c.backend, what));
     };
     no(c.fluids.empty() && !c.has_dem, "neither fluid nor grains");
     no(c.has_fem(), "FEM solids");
-    if (!c.has_dem) return;
-    // a feed's new grains would need the clumps' id maps widened where the grains are
-    for (const auto& g : c.dem.grains)
-        no(!g.clump_centers.empty() && !c.dem.feeds.empty(),
-           "clumps (" + g.origin.block() + ") and a grain feed");
 }
 
 } // namespace
