@@ -324,10 +324,16 @@ RunReport Simulation::run(const RunOptions& opt) {
         });
     for (auto& p : probes_) {
         probes::Probe* raw = p.get();
+        // a probe that reads grains brings back the grains, not their contact slots nor the
+        // fluid (ResidentDemPhase::publish_grains)
+        const bool grains = resident_dem_ && raw->reads_grains();
         integ.add_observer(
             time::Schedule::every_time(p->every()),
-            [this, raw](const time::StepInfo& s) { raw->record(s.t, probe_context()); },
-            raw->reads_particles() || (resident_dem_ && raw->reads_grains()));
+            [this, raw, grains](const time::StepInfo& s) {
+                if (grains) resident_dem_->publish_grains();
+                raw->record(s.t, probe_context());
+            },
+            raw->reads_particles());
     }
     const auto frames = spec_.vtk_every > 0 ? time::Schedule::every_time(spec_.vtk_every)
                                             : time::Schedule::every_steps(0);

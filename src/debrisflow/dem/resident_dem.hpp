@@ -107,15 +107,7 @@ public:
     // The grains, their contact state and slots to the host's GrainSet and DemSolver.
     void publish() override {
         if (!resident_) return;
-        Space::synchronize();
-        const auto down = [](const auto& from, auto& to) {
-            to.resize(std::size_t(from.size()));
-            from.download(to.data());
-        };
-        down(pos_, g_.pos), down(vel_, g_.vel), down(spin_, g_.spin);
-        down(force_, g_.force), down(torque_, g_.torque);
-        down(radius_, g_.radius), down(mass_, g_.mass), down(inv_mass_, g_.inv_mass);
-        down(inv_inertia_, g_.inv_inertia), down(material_, g_.material), down(id_, g_.id);
+        download_grains();
         down(hot_, host_.hot_);
         const auto down_slots = [&](const Slots& from, ContactSlots& to) {
             to.cap_ = from.cap;
@@ -130,17 +122,16 @@ public:
             down(fl_impulse_, f->impulse), down(fl_felt_, f->felt);
             down(fl_handover_, f->handover);
         }
-        if (clumps_ > 0) {
-            ClumpSet& cl = g_.clumps;
-            down(cl_pos_, cl.pos), down(cl_vel_, cl.vel), down(cl_ang_mom_, cl.ang_mom);
-            down(cl_force_, cl.force), down(cl_torque_, cl.torque), down(cl_orient_, cl.orient);
-            host_.map_clumps(); // members' indices in the grains' present order
-        }
-        record_wall_contacts();
-        ++copies_to_host_;
     }
 
-    void reload() override { resident_ = false; }
+    void publish_grains() override {
+        if (resident_) download_grains();
+    }
+
+    void reload() override {
+        resident_ = false;
+        ++changes_;
+    }
 
     // Defined with the coupling (coupling/resident_sph_dem.hpp).
     std::unique_ptr<time::Phase> couple_fluid(sph::ResidentPhase& fluid,
@@ -163,6 +154,7 @@ public:
 
     void append(const GrainSet& fresh) override {
         upload_once();
+        ++changes_;
         const Index m = fresh.size(), held = n_;
         if (m == 0) return;
         record_wall_contacts(); // of the evaluation before the rows move
@@ -247,6 +239,30 @@ public:
     long copies_from_host() const override { return copies_from_host_; }
 
 private:
+    template <class From, class To> static void down(const From& from, To& to) {
+        to.resize(std::size_t(from.size()));
+        from.download(to.data());
+    }
+    // The grains' arrays and clumps to the host's GrainSet, the walls' contact loads of the
+    // last evaluation to the walls that keep them: one copy to the host.
+    void download_grains() {
+        if (downloaded_ == changes_) return; // the host's copy is this state already
+        downloaded_ = changes_;
+        Space::synchronize();
+        down(pos_, g_.pos), down(vel_, g_.vel), down(spin_, g_.spin);
+        down(force_, g_.force), down(torque_, g_.torque);
+        down(radius_, g_.radius), down(mass_, g_.mass), down(inv_mass_, g_.inv_mass);
+        down(inv_inertia_, g_.inv_inertia), down(material_, g_.material), down(id_, g_.id);
+        if (clumps_ > 0) {
+            ClumpSet& cl = g_.clumps;
+            down(cl_pos_, cl.pos), down(cl_vel_, cl.vel), down(cl_ang_mom_, cl.ang_mom);
+            down(cl_force_, cl.force), down(cl_torque_, cl.torque), down(cl_orient_, cl.orient);
+            host_.map_clumps(); // members' indices in the grains' present order
+        }
+        record_wall_contacts();
+        ++copies_to_host_;
+    }
+
     // --- the state taken over from the host -----------------------------------------------
     void upload_once() {
         if (resident_) return;
@@ -421,6 +437,7 @@ private:
 
     // --- the step (DemSolver::advance and step) ------------------------------------------
     void advance(Real dt) {
+        ++changes_;
         const auto& p = host_.params_;
         if (!p.subcycle) {
             step(dt);
@@ -554,6 +571,7 @@ private:
     // the kept grains after a removal), m of them (the slots' partners are rebuilt right after;
     // their keys and history move with their rows).
     void permute(Index m) {
+        ++changes_;
         const Index held = n_;
         n_ = m;
         for (auto* a : {&pos_, &vel_, &spin_, &force_, &torque_}) gather(*a, vec_scratch_, 1);
@@ -675,6 +693,7 @@ private:
 
     // --- the force evaluation (DemSolver::forces in the device's layout) -----------------
     void forces(Real half_kick, bool collect_obstacles = false) {
+        ++changes_;
         const bool ends_step = half_kick > 0;
         const bool measure = host_.measure_contact_force_;
         const Real h = host_.current_h_;
@@ -861,6 +880,8 @@ private:
     // the exclusive scan of either
     Buffer<Index> keep_, leave_, at_;
     long copies_to_host_ = 0, copies_from_host_ = 0;
+    // counts the changes to the grains where they are; the host's copy is of change downloaded_
+    std::uint64_t changes_ = 1, downloaded_ = 0;
     double t_neighbors_ = 0, t_forces_ = 0, t_integration_ = 0;
 };
 

@@ -36,6 +36,11 @@ public:
     // Times the grains were copied to the host (publish) and from it (reload).
     virtual long copies_to_host() const = 0;
     virtual long copies_from_host() const = 0;
+    // The grains' state without their contact slots (positions, velocities, spins, forces,
+    // sizes, materials, ids, clumps) to the host's GrainSet, and the walls' contact loads of
+    // the last evaluation: what a probe that reads grains needs, about a tenth of publish()'s
+    // bytes per grain.
+    virtual void publish_grains() = 0;
     // The host's DemSolver changed the grains or their slots (a checkpoint restored): take its
     // state over again.
     virtual void reload() = 0;
