@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Checkpoint and restart (issue #31). For fluid cases (a gate, Laminar+SPS, Herschel-Bulkley,
 # an inlet and an outlet), grain cases (a settled column behind a gate; a hopper feed with its
-# random sizes; clumps; the granular flume; the column, the clumps and the flume on the resident DEM loop), rigid-body cases (a block sliding in water; the
+# random sizes; clumps; clumps with a feed; the granular flume; the column, the clumps, the
+# clumps with a feed and the flume on the resident DEM loop), rigid-body cases (a block sliding in water; the
 # reduced container case; a hinged disc and a box on a spring falling into grains, on the host's
 # DEM loop and on the resident one; mesh rocks
 # from a feed) and coupled cases (FEM alone, SPH-FEM, SPH-DEM drag on the host's loops and on
@@ -60,6 +61,8 @@ dem_flume_resident $src/cases/flume/flume30_reduced.toml 0.01 --backend host_res
 dem_hopper_feed_baffles $src/cases/debris/baffles_hopper_dem.toml 0.06
 dem_clumps $src/cases/deposits/column_collapse2d_clumps.toml 0.1
 dem_clumps_resident $src/cases/deposits/column_collapse2d_clumps.toml 0.1 --backend host_resident
+clumps_feed $inputs/clumps_feed2d.toml 0.2
+clumps_feed_resident $inputs/clumps_feed2d.toml 0.2 --backend host_resident
 dem_flume $src/cases/flume/flume30_reduced.toml 0.01
 body_in_fluid $src/cases/rigid/sliding_block2d.toml 0.3
 container_reduced $src/cases/papers/container_dambreak2d_reduced.toml 0.02

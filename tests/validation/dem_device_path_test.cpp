@@ -673,71 +673,7 @@ TEST(DemResident, ClumpsCollapseAndLeaveTheDomain) {
 // (the id maps widened there, as DemSolver::map_clumps widens them), and clumps and discs
 // leave through the domain's cut x+ face.
 TEST(DemResident, FeedOntoCollapsingClumps) {
-    const std::string file = test::write_temp_case("clumps_and_feed", R"(
-name = "clumps_and_feed"
-dimensions = 2
-[time]
-end = 0.3
-[output]
-vtk = false
-[domain]
-min = [-0.01, 0, -0.01]
-max = [0.14, 0, 0.4]
-[dem]
-thickness = 0.005
-safety = 0.1
-[[material]]
-name = "glass"
-density = 2500
-kn = 1e5
-restitution = 0.5
-friction = 0.5
-[[wall]]
-name = "floor"
-shape = "plane"
-material = "glass"
-point = [0, 0, 0]
-normal = [0, 0, 1]
-[[wall]]
-name = "back"
-shape = "plane"
-material = "glass"
-point = [0, 0, 0]
-normal = [1, 0, 0]
-[[wall]]
-name = "gate"
-shape = "plane"
-material = "glass"
-point = [0.06, 0, 0]
-normal = [-1, 0, 0]
-remove_at = 0
-[[grains]]
-name = "column"
-material = "glass"
-count = 100
-seed = 5
-clump = [[-1, 0, 0, 1], [1, 0, 0, 1]]
-size = { distribution = "lognormal", d50 = 0.005, sigma = 0.1, min = 0.004, max = 0.006 }
-region = { shape = "box", min = [0, 0, 0], max = [0.06, 0, 0.2] }
-[[feed]]
-name = "rain"
-material = "glass"
-min = [0.0, 0, 0.25]
-max = [0.06, 0, 0.3]
-times = [0.0, 0.2, 0.21]
-discharge = [2e-4, 2e-4, 0.0]
-size = { distribution = "lognormal", d50 = 0.005, sigma = 0.1, min = 0.004, max = 0.006 }
-[[probe]]
-name = "energy"
-type = "kinetic_energy"
-min = [-0.01, 0, -0.01]
-max = [0.14, 0, 0.4]
-every = 0.01
-[[probe]]
-name = "lost"
-type = "domain_exit"
-every = 0.01
-)");
+    const std::string file = "tests/cli/inputs/clumps_feed2d.toml";
     std::size_t at_end = 0;
     const State s = check_resident(file, {}, 0.3, 0.005, &at_end);
     EXPECT_GT(at_end, 200u);       // the feed added discs to the clumps' members

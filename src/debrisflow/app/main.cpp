@@ -68,6 +68,9 @@ int check(const std::string& file, const std::vector<std::string>& sets) {
                                  spec.dem.params.subcycle ? ", sub-cycled" : "");
         if (!sim.has_fluid() || spec.backend != "host")
             std::cout << fmt::format("backend: {}\n", dem::backend_words(spec.backend));
+        if (sim.has_fluid() && spec.backend != "host" && spec.dem.fluid_drag != "none")
+            std::cout << "backend: the SPH-DEM drag coupling evaluated where the particles and "
+                         "grains are (coupling/resident_sph_dem.hpp)\n";
     }
     if (sim.has_bodies()) {
         const auto& r = sim.bodies();

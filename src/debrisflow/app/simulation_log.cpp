@@ -70,6 +70,9 @@ void Simulation::log_case(const RunReport& report) {
     if (solver_) log_.line("backend: " + sph::backend_words(spec_.backend, spec_.has_bodies()));
     if (dem_ && (!solver_ || spec_.backend != "host")) // each resident phase says where it runs
         log_.line("backend: " + dem::backend_words(spec_.backend));
+    if (resident_sph_dem_)
+        log_.line("backend: the SPH-DEM drag coupling evaluated where the particles and grains "
+                  "are (coupling/resident_sph_dem.hpp)");
     if (dem_)
         log_.line(fmt::format("dem: {} grains{}, {:.4g} kg, {} walls; dt = {:.3g} s ({}; automatic "
                               "{:.3g} s){}",
