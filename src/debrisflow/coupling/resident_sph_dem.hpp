@@ -98,9 +98,9 @@ public:
 private:
     GrainsInFluid grains() {
         auto& d = grains_;
-        return {d.pos_.data(), d.vel_.data(),        d.radius_.data(),     d.inv_mass_.data(),
-                d.n_,          d.fl_force_.data(),   d.fl_u_.data(),       d.fl_beta_.data(),
-                share_.data(), d.fl_impulse_.data(), d.fl_handover_.data()};
+        return {d.pos_.data(), d.vel_.data(),        d.radius_.data(), d.inv_mass_.data(),
+                d.n_,          d.fl_force_.data(),   d.fl_u_.data(),   d.fl_beta_.data(),
+                share_.data(), d.fl_handover_.data()};
     }
 
     // The grains in cells of the kernel support (CellGrid::build's counting sort, as the

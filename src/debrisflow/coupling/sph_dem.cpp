@@ -70,7 +70,6 @@ void SphDemCoupling::interpolate() {
                           load_.u.data(),
                           load_.beta.data(),
                           share_.data(),
-                          load_.impulse.data(),
                           load_.handover.data()};
     const bool has_mu = set.mu.size() == std::size_t(np);
     const Real nu = fluid_.params().nu;

@@ -42,7 +42,7 @@ struct GrainsInFluid {
     Vec3 *force, *u; // held force [N], local fluid velocity [m/s]
     Real* beta;      // drag coefficient [kg/s]
     Real* share;     // S_f per grain: the reaction's weights
-    Vec3 *impulse, *handover;
+    Vec3* handover;  // the DEM's impulse over its last advance, for the reaction
 };
 
 // Per grain i, the fluid load of this evaluation (Robinson, Ramaioli & Luding 2014 fields):
