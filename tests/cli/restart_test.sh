@@ -2,7 +2,8 @@
 # Checkpoint and restart (issue #31). For fluid cases (a gate, Laminar+SPS, Herschel-Bulkley,
 # an inlet and an outlet), grain cases (a settled column behind a gate; a hopper feed with its
 # random sizes; clumps; clumps with a feed; the granular flume; the column, the clumps, the
-# clumps with a feed and the flume on the resident DEM loop), rigid-body cases (a block sliding in water; the
+# clumps with a feed and the flume on the resident DEM loop; discs pushed across the planes of
+# a mass flux, a discharge and a trapping probe on both loops), rigid-body cases (a block sliding in water; the
 # reduced container case; a hinged disc and a box on a spring falling into grains, on the host's
 # DEM loop and on the resident one; mesh rocks
 # from a feed) and coupled cases (FEM alone, SPH-FEM, SPH-DEM drag on the host's loops and on
@@ -63,6 +64,8 @@ dem_clumps $src/cases/deposits/column_collapse2d_clumps.toml 0.1
 dem_clumps_resident $src/cases/deposits/column_collapse2d_clumps.toml 0.1 --backend host_resident
 clumps_feed $inputs/clumps_feed2d.toml 0.2
 clumps_feed_resident $inputs/clumps_feed2d.toml 0.2 --backend host_resident
+pushed_across $inputs/pushed_across2d.toml 0.25
+pushed_across_resident $inputs/pushed_across2d.toml 0.25 --backend host_resident
 dem_flume $src/cases/flume/flume30_reduced.toml 0.01
 body_in_fluid $src/cases/rigid/sliding_block2d.toml 0.3
 container_reduced $src/cases/papers/container_dambreak2d_reduced.toml 0.02

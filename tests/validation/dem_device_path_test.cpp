@@ -274,8 +274,13 @@ every = 2e-4
 TEST(DemResident, Box100k) {
     check_resident("cases/bench/box100k.toml", {"time.end=2e-5"}, 2e-5, 0.01);
 }
+// Its probes (flow section, kinetic energy, run-up, mass flux, wall forces) are evaluated where
+// the grains are and bring back their few numbers, or the section's rows (GrainReader): the
+// grains are copied to the host once, at the end.
 TEST(DemResident, ReducedFlume) {
-    check_resident("cases/flume/flume30_reduced.toml", {"time.end=0.05"}, 0.05, 0.01);
+    const State resident =
+        check_resident("cases/flume/flume30_reduced.toml", {"time.end=0.05"}, 0.05, 0.01);
+    EXPECT_EQ(resident.copies_to_host, 1);
 }
 TEST(DemResident, SlitDamTypeA) {
     check_resident("cases/papers/slit_dam_dem/typeA.toml", {"dem.settle=false", "time.end=0.07"},
@@ -355,12 +360,66 @@ every = 0.005
 name = "left"
 type = "domain_exit"
 every = 0.005
+[[probe]]
+name = "across"
+type = "mass_flux"
+point = [0.1, 0, 0]
+normal = [1, 0, 0]
+every = 0.005
+[[probe]]
+name = "ahead"
+type = "deposit"
+min = [0.1, -0.01, -0.02]
+max = [0.2, 0.01, 0.2]
+every = 0.005
+[[probe]]
+name = "flow"
+type = "section"
+min = [0.05, -0.01, 0]
+max = [0.15, 0.01, 0.1]
+every = 0.005
+[[probe]]
+name = "on_pusher"
+type = "runup"
+wall = "pusher"
+every = 0.005
 )");
     std::size_t at_start = 0, at_end = 0;
-    check_resident(file, {"time.end=1e-6"}, 1e-6, 0.01, &at_start);
+    const State start = check_resident(file, {"time.end=1e-6"}, 1e-6, 0.01, &at_start);
     const State s = check_resident(file, {}, 0.25, 0.01, &at_end);
     EXPECT_LT(at_end, at_start);                         // some left, and were removed
     EXPECT_EQ(s.left.count[1], long(at_start - at_end)); // through x+
+    // The grain probes sample where the grains are (GrainReader): the grains come to the host
+    // once, at the end.
+    EXPECT_EQ(s.copies_to_host, 1);
+    // The mass flux at x = 0.1 m, counted where the grains are from each grain id's side at the
+    // sample before, against the grains' own record: those that started behind the plane and
+    // ended ahead of it or left through x+, less those that went the other way. Each disc is
+    // rho pi r^2 thickness.
+    const double disc = 2500 * 3.14159265358979 * 0.005 * 0.005 * 0.005;
+    long net = 0;
+    for (const auto& [id, g] : start.grains) {
+        const auto it = s.grains.find(id);
+        const bool ahead = it == s.grains.end() || it->second.x.x >= 0.1;
+        net += g.x.x < 0.1 && ahead ? 1 : 0;
+        net -= g.x.x >= 0.1 && !ahead ? 1 : 0;
+    }
+    ASSERT_GT(net, 0);
+    const auto& across = s.probes[3].back(); // time, flux, cumulative
+    EXPECT_NEAR(across[2], double(net) * disc, 1e-9 * disc);
+    // The deposit ahead of the plane and the run-up on the pusher (at 0.6 m/s from x = 0; the
+    // grains' tops above the domain's floor, z = -0.02 m, within 1.05 r of it), against the same
+    // record.
+    long ahead_now = 0;
+    double top = 0;
+    const double pusher = 0.6 * s.probes[6].back()[0];
+    for (const auto& [id, g] : s.grains) {
+        ahead_now += g.x.x >= 0.1 && g.x.x <= 0.2 ? 1 : 0;
+        if (g.x.x - pusher < 1.05 * 0.005) top = std::max(top, double(g.x.z) + 0.005 + 0.02);
+    }
+    EXPECT_NEAR(s.probes[4].back()[2], double(ahead_now) * disc, 1e-9 * disc); // solid_mass
+    EXPECT_GT(top, 0);
+    EXPECT_DOUBLE_EQ(s.probes[6].back()[1], top);
 }
 
 TEST(DemResident, PushedIntoAnOutlet) {

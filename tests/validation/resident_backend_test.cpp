@@ -24,6 +24,7 @@ struct State {
     Index count = 0;
     std::array<long, 6> exits{}; // fluid particles that left, by face
     long copies_to_host = -1;    // the resident SPH phase's copies of the particles
+    long grain_copies = -1;      // the resident DEM phase's copies of the grains
     double vmax = 0;
 };
 
@@ -37,6 +38,7 @@ State run(const std::string& file, std::vector<std::string> sets, const std::str
     s.steps = report.result.steps;
     s.exits = report.fluid_exit.count;
     s.copies_to_host = report.sph_copies_to_host;
+    s.grain_copies = report.dem_copies_to_host;
     const auto& p = sim.particles();
     s.count = p.size();
     for (Index i = 0; i < p.size(); ++i) {
@@ -58,12 +60,14 @@ State run(const std::string& file, std::vector<std::string> sets, const std::str
 // Largest differences over every particle (fluid and walls, by persistent id): positions in
 // dp, velocities against the largest speed, densities against rho0, pressures against the
 // largest; and over the probe samples against each column's largest magnitude.
-// `resident_copies`: where given, the resident run's copies of the particles to the host.
+// `resident_copies`, `grain_copies`: where given, the resident run's copies of the particles and
+// of the grains to the host.
 void check(const std::string& file, const std::vector<std::string>& sets, Real until, double dp,
-           double rho0, long* resident_copies = nullptr) {
+           double rho0, long* resident_copies = nullptr, long* grain_copies = nullptr) {
     const State host = run(file, sets, "host", until);
     const State resident = run(file, sets, "host_resident", until);
     if (resident_copies) *resident_copies = resident.copies_to_host;
+    if (grain_copies) *grain_copies = resident.grain_copies;
     ASSERT_EQ(host.steps, resident.steps);
     ASSERT_EQ(host.count, resident.count);
     EXPECT_EQ(host.exits, resident.exits);
@@ -202,15 +206,17 @@ TEST(ResidentBackend, BinghamCollapse) {
 // above its floor, Di Felice drag, 170 fluid steps (each sub-cycled by the DEM), 511 contacts
 // at the end; bitwise equal when written (2026-12-05).
 TEST(ResidentBackend, GrainsInWater) {
-    long copies = -1;
+    long copies = -1, grain_copies = -1;
     check("cases/bench/sph_dem_tank.toml",
           {"dp=0.02", "grains.0.count=800",
            "grains.0.region={shape=\"box\", min=[0.1,0.1,0.0], max=[0.16,0.16,0.03]}",
            "dem.contact_pass=\"slots\""},
-          0.05, 0.02, 1000, &copies);
-    // The grains' energy probe samples 11 times; it brings back the grains, not the fluid:
-    // the particles' one copy to the host is the end's.
+          0.05, 0.02, 1000, &copies, &grain_copies);
+    // The grains' energy probe samples 11 times where the grains are (GrainReader::sums): it
+    // brings back its three numbers, neither the fluid nor the grains, whose one copy to the
+    // host each is the end's.
     EXPECT_EQ(copies, 1);
+    EXPECT_EQ(grain_copies, 1);
 }
 
 // mDBC walls: the ghost-node densities where the particles are, before the pressures.

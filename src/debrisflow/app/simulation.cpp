@@ -63,6 +63,7 @@ Simulation::Simulation(io::CaseSpec spec)
         dem_ = std::make_unique<dem::DemSolver>(spec_.dem.params, grains_, dem_walls_,
                                                 spec_.dem.materials, spec_.dem.overrides,
                                                 spec_.domain);
+        host_grains_ = std::make_unique<probes::HostGrainReader>(*dem_);
         if (rigid_) {
             for (std::size_t b = 0; b < rigid_->models().size(); ++b)
                 if (rigid_->models()[b].samples.empty())

@@ -19,6 +19,7 @@
 #include "debrisflow/io/vtk_writer.hpp"
 #include "debrisflow/probes/design_formulas.hpp"
 #include "debrisflow/probes/fluid_reader.hpp"
+#include "debrisflow/probes/grain_reader.hpp"
 #include "debrisflow/probes/probe.hpp"
 #include "debrisflow/rigid/body_solver.hpp"
 #include "debrisflow/sph/resident_backend.hpp"
@@ -95,7 +96,9 @@ private:
     probes::ProbeContext probe_context() {
         const probes::FluidReader* fluid =
             resident_ ? &resident_->fluid_reader() : host_fluid_.get();
-        return {solver_.get(), dem_.get(), rigid_.get(), fem_.get(), &domain_exit_, fluid};
+        probes::GrainReader* grains =
+            resident_dem_ ? &resident_dem_->grain_reader() : host_grains_.get();
+        return {solver_.get(), dem_.get(), rigid_.get(), fem_.get(), &domain_exit_, fluid, grains};
     }
     // World positions, velocities, radii and body index of the bodies' contact samples (or
     // vertices) for the VTK output.
@@ -113,6 +116,7 @@ private:
     dem::GrainSet grains_;
     dem::WallSet dem_walls_;
     std::unique_ptr<dem::DemSolver> dem_;
+    std::unique_ptr<probes::GrainReader> host_grains_; // the probes' view of the host's grains
     // The DEM phase's time loop on a resident backend (exec.backend other than "host"); the
     // solver above then keeps the parameters, walls, step and counters.
     std::unique_ptr<dem::ResidentDemPhase> resident_dem_;

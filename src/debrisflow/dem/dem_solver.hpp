@@ -61,6 +61,8 @@ public:
         return clump_of_id_.empty() ? -1 : clump_of_id_[grains_.id[std::size_t(i)]];
     }
     Index index_of_id(std::uint32_t id) const { return index_of_id_[id]; }
+    // Each grain id's clump (< 0: free), empty without clumps.
+    const std::vector<std::int32_t>& clump_of_ids() const { return clump_of_id_; }
     // Clears keep[i] for every member of a clump that has a member with keep[i] == 0: a clump
     // leaves whole. Call before counting what remove_grains will take.
     void expand_to_clumps(std::vector<std::uint8_t>& keep) const;

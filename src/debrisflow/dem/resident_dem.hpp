@@ -26,6 +26,7 @@
 #include "debrisflow/dem/grain_kick_drift_k.hpp"
 #include "debrisflow/dem/resident_dem_backend.hpp"
 #include "debrisflow/dem/resident_dem_k.hpp"
+#include "debrisflow/dem/resident_grain_reader.hpp"
 #include "debrisflow/dem/slot_candidates_k.hpp"
 #include "debrisflow/exec/compact_k.hpp"
 #include "debrisflow/exec/reorder_k.hpp"
@@ -43,6 +44,7 @@ namespace debrisflow::dem {
 template <class Space> class ResidentDem final : public ResidentDemPhase {
     template <class T> using Buffer = typename Space::template Buffer<T>;
     friend class coupling::ResidentSphDem<Space>;
+    friend class ResidentGrainReader<Space>;
 
     // One kind of contact slots (grain-grain or grain-wall) with the rows of the last rebuild
     // (old_*), which the next rebuild carries the history from (ContactSlots on the host).
@@ -110,6 +112,8 @@ public:
     void publish_grains() override {
         if (resident_) download_grains();
     }
+
+    probes::GrainReader& grain_reader() override { return reader_; }
 
     void reload() override {
         resident_ = false;
@@ -355,6 +359,7 @@ private:
     // counts the changes to the grains where they are; the host's copy is of change downloaded_
     std::uint64_t changes_ = 1, downloaded_ = 0;
     double t_neighbors_ = 0, t_forces_ = 0, t_integration_ = 0;
+    ResidentGrainReader<Space> reader_{*this}; // the grain probes' sums, maxima and rows
 };
 
 } // namespace debrisflow::dem

@@ -21,6 +21,9 @@ class SphDemCoupling;
 namespace debrisflow::sph {
 class ResidentPhase;
 }
+namespace debrisflow::probes {
+class GrainReader;
+}
 
 namespace debrisflow::dem {
 
@@ -41,6 +44,9 @@ public:
     // the last evaluation: what a probe that reads grains needs, about a tenth of publish()'s
     // bytes per grain.
     virtual void publish_grains() = 0;
+    // The grain probes' sums, maxima and rows, evaluated where the grains are
+    // (dem/resident_grain_reader.hpp).
+    virtual probes::GrainReader& grain_reader() = 0;
     // The host's DemSolver changed the grains or their slots (a checkpoint restored): take its
     // state over again.
     virtual void reload() = 0;

@@ -17,6 +17,7 @@ template <class Space> void ResidentDem<Space>::rebuild() {
     host_.drift_ = 0;
     host_.walls_seen_ = host_.walls_.layout();
     ++host_.builds_;
+    hot_.resize(n_); // one per grain held: fewer after a removal
     if (n_ == 0) return;
     configure_grid();
     build_grid();

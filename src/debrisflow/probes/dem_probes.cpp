@@ -1,16 +1,11 @@
 #include "debrisflow/probes/dem_probes.hpp"
 #include "debrisflow/dem/dem_solver.hpp"
+#include "debrisflow/probes/grain_reader.hpp"
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace debrisflow::probes {
-
-namespace {
-bool inside(Vec3 p, Vec3 lo, Vec3 hi) {
-    return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y && p.z >= lo.z && p.z <= hi.z;
-}
-} // namespace
 
 std::unique_ptr<Probe> SectionProbe::from_config(const ProbeSetup& s) {
     s.require(s.c.has_dem, "[[grains]]");
@@ -42,17 +37,14 @@ std::unique_ptr<Probe> MassFluxProbe::from_config(const ProbeSetup& s) {
 }
 
 std::vector<Real> SectionProbe::sample(Real, const ProbeContext& ctx) {
-    const auto& g = ctx.dem->grains();
     std::vector<Real> tops;
     Real m = 0, mv = 0, md = 0, vs = 0;
-    for (Index i = 0; i < g.size(); ++i) {
-        const std::size_t k = std::size_t(i);
-        if (!inside({g.pos[k].x, g.pos[k].y, g.pos[k].z}, lo_, hi_)) continue;
-        tops.push_back(g.pos[k].z + g.radius[k] - bed_);
-        m += g.mass[k];
-        mv += g.mass[k] * g.vel[k].x;
-        md += g.mass[k] * 2 * g.radius[k];
-        vs += g.mass[k] / ctx.dem->materials()[g.material[k]].density;
+    for (const GrainRow& r : ctx.grains->rows({lo_, hi_})) { // in id order
+        tops.push_back(r.pos.z + r.radius - bed_);
+        m += r.mass;
+        mv += r.mass * r.vel.x;
+        md += r.mass * 2 * r.radius;
+        vs += r.volume;
     }
     if (tops.empty()) return {0, 0, 0, 0, 0, 0, 0};
     std::sort(tops.begin(), tops.end());
@@ -69,49 +61,14 @@ std::vector<Real> SectionProbe::sample(Real, const ProbeContext& ctx) {
     return {h, v, rho, fr, savage, Real(tops.size()), h_solid};
 }
 
+// Free grains by their own energy, clumps once by their centre of mass (GrainReader::sums).
 std::vector<Real> KineticEnergyProbe::sample(Real, const ProbeContext& ctx) {
-    const auto& g = ctx.dem->grains();
-    Real ek = 0, er = 0;
-    long n = 0;
-    // a clump counts once, by its centre of mass: (1/2) M V^2 and (1/2) w . L
-    const auto& cl = g.clumps;
-    for (Index c = 0; c < cl.size(); ++c) {
-        const std::size_t k = std::size_t(c);
-        if (!inside({cl.pos[k].x, cl.pos[k].y, cl.pos[k].z}, lo_, hi_)) continue;
-        ek += 0.5 * cl.mass[k] * dot(cl.vel[k], cl.vel[k]);
-        er += 0.5 * dot(cl.spin(c), cl.ang_mom[k]);
-        ++n;
-    }
-    for (Index i = 0; i < g.size(); ++i) {
-        const std::size_t k = std::size_t(i);
-        if (ctx.dem->clump_of(i) >= 0) continue;
-        if (!inside({g.pos[k].x, g.pos[k].y, g.pos[k].z}, lo_, hi_)) continue;
-        ek += 0.5 * g.mass[k] *
-              (g.vel[k].x * g.vel[k].x + g.vel[k].y * g.vel[k].y + g.vel[k].z * g.vel[k].z);
-        er += 0.5 / g.inv_inertia[k] *
-              (g.spin[k].x * g.spin[k].x + g.spin[k].y * g.spin[k].y + g.spin[k].z * g.spin[k].z);
-        ++n;
-    }
-    return {ek, er, Real(n)};
+    const GrainSums s = ctx.grains->sums({lo_, hi_});
+    return {s.translational, s.rotational, s.count};
 }
 
 std::vector<Real> RunupProbe::sample(Real, const ProbeContext& ctx) {
-    const auto& g = ctx.dem->grains();
-    const auto& prims = ctx.dem->walls().primitives();
-    Real top = 0;
-    for (Index i = 0; i < g.size(); ++i) {
-        const std::size_t k = std::size_t(i);
-        const Vec3 p{g.pos[k].x, g.pos[k].y, g.pos[k].z};
-        const Real reach = 1.05 * g.radius[k];
-        for (const auto& w : prims) {
-            if (w.wall != wall_) continue;
-            if (dem::wall_distance(w, p, dem::closest_point(w, p)) < reach) {
-                top = std::max(top, p.z + g.radius[k] - bed_);
-                break;
-            }
-        }
-    }
-    return {top};
+    return {ctx.grains->runup(wall_, bed_)};
 }
 
 std::vector<Real> MassFluxProbe::sample(Real t, const ProbeContext& ctx) {

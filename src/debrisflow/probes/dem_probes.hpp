@@ -23,8 +23,7 @@ public:
                 "N_savage [-]", "grains [-]", "h_solid [m]"};
     }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
-    bool reads_particles() const override { return false; } // the grains (and bodies)
-    bool reads_grains() const override { return true; }
+    bool reads_particles() const override { return false; } // ctx.grains
 
 private:
     Vec3 lo_, hi_;
@@ -43,8 +42,7 @@ public:
         return {"E_kin [J]", "E_rot [J]", "grains [-]"};
     }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
-    bool reads_particles() const override { return false; } // the grains (and bodies)
-    bool reads_grains() const override { return true; }
+    bool reads_particles() const override { return false; } // ctx.grains
 
 private:
     Vec3 lo_, hi_;
@@ -60,8 +58,7 @@ public:
         : Probe(std::move(name), every), wall_(wall), bed_(bed) {}
     std::vector<std::string> columns() const override { return {"runup [m]"}; }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
-    bool reads_particles() const override { return false; } // the grains (and bodies)
-    bool reads_grains() const override { return true; }
+    bool reads_particles() const override { return false; } // ctx.grains
 
 private:
     int wall_;
@@ -80,8 +77,7 @@ public:
         : Probe(std::move(name), every), crossing_(point, normal, wrap) {}
     std::vector<std::string> columns() const override { return {"flux [kg/s]", "cumulative [kg]"}; }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
-    bool reads_particles() const override { return false; } // the grains (and bodies)
-    bool reads_grains() const override { return true; }
+    bool reads_particles() const override { return false; } // ctx.grains (and bodies)
     void extra_state(checkpoint::Archive& ar) override;
 
 private:

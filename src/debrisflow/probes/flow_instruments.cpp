@@ -1,6 +1,7 @@
 #include "debrisflow/probes/flow_instruments.hpp"
 #include "debrisflow/dem/dem_solver.hpp"
 #include "debrisflow/probes/fluid_reader.hpp"
+#include "debrisflow/probes/grain_reader.hpp"
 #include "debrisflow/rigid/body_solver.hpp"
 #include <algorithm>
 #include <cmath>
@@ -12,7 +13,6 @@ namespace {
 bool in_box(Vec3 p, Vec3 lo, Vec3 hi) {
     return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y && p.z >= lo.z && p.z <= hi.z;
 }
-constexpr std::uint64_t body_key = std::uint64_t(1) << 40;
 } // namespace
 
 Real SolidCrossing::wrap_distance(const io::CaseSpec& c, Vec3 n) {
@@ -40,13 +40,16 @@ void SolidCrossing::cross(std::uint64_t key, Vec3 x, Real m, Real v) {
 }
 
 void SolidCrossing::update(const ProbeContext& ctx) {
-    if (ctx.dem) {
-        const auto& g = ctx.dem->grains();
-        const auto& mats = ctx.dem->materials();
-        for (Index i = 0; i < g.size(); ++i) {
-            const std::size_t k = std::size_t(i);
-            cross(g.id[k], g.pos[k], g.mass[k], g.mass[k] / mats[g.material[k]].density);
+    if (ctx.grains) {
+        if (plane_ < 0) {
+            grains_ = ctx.grains;
+            plane_ = grains_->add_plane({point_, n_, wrap_});
         }
+        if (pending_) grains_->restore(plane_, restored_);
+        pending_ = false;
+        const GrainSums crossed = grains_->cross(plane_);
+        mass_ += crossed.mass;
+        volume_ += crossed.volume;
     }
     if (ctx.rigid) {
         const auto& b = ctx.rigid->bodies();
@@ -162,15 +165,10 @@ std::vector<Real> TrappingProbe::sample(Real t, const ProbeContext& ctx) {
 
 std::vector<Real> DepositProbe::sample(Real, const ProbeContext& ctx) {
     Real vs = 0, ms = 0, vf = 0;
-    if (ctx.dem) {
-        const auto& g = ctx.dem->grains();
-        const auto& mats = ctx.dem->materials();
-        for (Index i = 0; i < g.size(); ++i) {
-            const std::size_t k = std::size_t(i);
-            if (!in_box(g.pos[k], lo_, hi_)) continue;
-            ms += g.mass[k];
-            vs += g.mass[k] / mats[g.material[k]].density;
-        }
+    if (ctx.grains) { // summed where the grains are
+        const GrainSums grains = ctx.grains->sums({lo_, hi_});
+        ms += grains.mass;
+        vs += grains.volume;
     }
     if (ctx.rigid)
         for (std::size_t k = 0; k < ctx.rigid->bodies().size(); ++k)

@@ -1,4 +1,5 @@
 #pragma once
+#include "debrisflow/probes/grain_reader.hpp"
 #include "debrisflow/probes/probe.hpp"
 #include <unordered_map>
 
@@ -6,7 +7,8 @@ namespace debrisflow::probes {
 
 // Solid mass crossing a plane (point, normal), grain by grain and body by body, from the
 // signed distance each had at the previous sample; a jump by more than half the domain is a
-// periodic wrap, not a crossing. Cumulative net mass and volume in the +normal direction.
+// periodic wrap, not a crossing. Cumulative net mass and volume in the +normal direction. The
+// grains are counted where they are (GrainReader::cross), the few bodies here.
 class SolidCrossing {
 public:
     SolidCrossing(Vec3 point, Vec3 normal, Real wrap) : point_(point), n_(normal), wrap_(wrap) {}
@@ -19,11 +21,16 @@ public:
     void state(checkpoint::Archive& ar);
 
 private:
+    static constexpr std::uint64_t body_key = std::uint64_t(1) << 40; // body k's key: + k
     void cross(std::uint64_t key, Vec3 x, Real m, Real v);
     Vec3 point_, n_;
     Real wrap_;
     Real mass_ = 0, volume_ = 0;
-    std::unordered_map<std::uint64_t, Real> last_; // signed distance by grain id / body
+    std::unordered_map<std::uint64_t, Real> last_; // signed distance by body
+    GrainReader* grains_ = nullptr;                // where the grains' distances are kept
+    int plane_ = -1;                               // their plane there
+    std::vector<Real> restored_;                   // the grains' distances from a checkpoint
+    bool pending_ = false;                         // restored_ not yet handed to grains_
 };
 
 // Discharge through a plane by phase: fluid as the slab estimate sum w_i m_i (v_i . n) / dp
@@ -39,8 +46,7 @@ public:
     std::vector<std::string> columns() const override;
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
     void extra_state(checkpoint::Archive& ar) override;
-    bool reads_particles() const override { return false; } // rows near the plane, ctx.fluid
-    bool reads_grains() const override { return true; }
+    bool reads_particles() const override { return false; } // ctx.fluid, ctx.grains
 
 private:
     Vec3 point_, n_;
@@ -66,8 +72,7 @@ public:
     }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
     void extra_state(checkpoint::Archive& ar) override;
-    bool reads_particles() const override { return false; } // grains and bodies
-    bool reads_grains() const override { return true; }
+    bool reads_particles() const override { return false; } // ctx.grains and bodies
 
 private:
     SolidCrossing up_, down_;
@@ -88,8 +93,7 @@ public:
         return {"solid_volume [m3]", "solid_mass [kg]", "fluid_volume [m3]"};
     }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
-    bool reads_particles() const override { return false; } // rows, ctx.fluid
-    bool reads_grains() const override { return true; }
+    bool reads_particles() const override { return false; } // rows, ctx.fluid, ctx.grains
 
 private:
     Vec3 lo_, hi_;

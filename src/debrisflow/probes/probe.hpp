@@ -29,6 +29,7 @@ class DomainExit;
 namespace debrisflow::probes {
 
 class FluidReader;
+class GrainReader;
 
 // What a probe may look at: the fluid, the grains, the rigid bodies, the FEM solids (null when
 // absent) and the tally of what left the domain.
@@ -40,6 +41,8 @@ struct ProbeContext {
     const flow::DomainExit* domain_exit = nullptr; // what left the domain
     // The fluid's point samples and reductions, where its particles are (fluid_reader.hpp).
     const FluidReader* fluid = nullptr;
+    // The grains' sums, maxima and rows, where they are (grain_reader.hpp).
+    GrainReader* grains = nullptr;
 };
 
 // Largest mean of the series (t_k, v_k), joined linearly, over any window [t - window, t]
@@ -65,7 +68,7 @@ public:
     // the grains or their own tallies.
     virtual bool reads_particles() const { return true; }
     // Whether a sample reads the grains on the host (ctx.dem's GrainSet, published from a
-    // resident DEM phase first).
+    // resident DEM phase first); false for probes that read only a GrainReader.
     virtual bool reads_grains() const { return false; }
     // Opens probes/<name>.csv in `dir`; probes with field output also open their VTK series.
     void open(const std::string& dir);

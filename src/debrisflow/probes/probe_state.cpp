@@ -6,8 +6,28 @@
 
 namespace debrisflow::probes {
 
+// The bodies' distances (keyed body_key + k) and the grains' (keyed by id) in one map.
 void SolidCrossing::state(checkpoint::Archive& ar) {
-    ar(mass_, volume_, last_);
+    std::unordered_map<std::uint64_t, Real> all;
+    if (!ar.is_loading()) {
+        all = last_;
+        const std::vector<Real> d = pending_ || !grains_ ? restored_ : grains_->distances(plane_);
+        for (std::size_t id = 0; id < d.size(); ++id)
+            if (d[id] != unseen_distance) all.emplace(id, d[id]);
+    }
+    ar(mass_, volume_, all);
+    if (!ar.is_loading()) return;
+    last_.clear();
+    restored_.clear();
+    for (const auto& [key, d] : all) {
+        if (key >= body_key) {
+            last_.emplace(key, d);
+            continue;
+        }
+        if (restored_.size() <= key) restored_.resize(key + 1, unseen_distance);
+        restored_[key] = d;
+    }
+    pending_ = true;
 }
 
 void DischargeProbe::extra_state(checkpoint::Archive& ar) {
