@@ -6,8 +6,8 @@
 # a mass flux, a discharge and a trapping probe on both loops), rigid-body cases (a block sliding in water; the
 # reduced container case; a hinged disc and a box on a spring falling into grains, on the host's
 # DEM loop and on the resident one; mesh rocks
-# from a feed) and coupled cases (FEM alone, SPH-FEM, SPH-DEM drag on the host's loops and on
-# the resident ones, the SPH-DEM-FEM retaining dam), a run to T and the same run restarted from its checkpoint near
+# from a feed) and coupled cases (FEM alone, SPH-FEM, grains on a FEM plate and SPH-DEM drag on
+# the host's loops and on the resident ones, the SPH-DEM-FEM retaining dam), a run to T and the same run restarted from its checkpoint near
 # T/2 write byte-identical probe files, VTK frames and final state (the final checkpoint holds
 # every array), at the same thread count. Also: a stop by SIGTERM writes a checkpoint to
 # continue from; a kill while a checkpoint is written leaves the previous one usable; damaged,
@@ -66,6 +66,8 @@ clumps_feed $inputs/clumps_feed2d.toml 0.2
 clumps_feed_resident $inputs/clumps_feed2d.toml 0.2 --backend host_resident
 pushed_across $inputs/pushed_across2d.toml 0.25
 pushed_across_resident $inputs/pushed_across2d.toml 0.25 --backend host_resident
+grains_on_plate $inputs/restart_grains_on_plate3d.toml 0.02
+grains_on_plate_resident $inputs/restart_grains_on_plate3d.toml 0.02 --backend host_resident
 dem_flume $src/cases/flume/flume30_reduced.toml 0.01
 body_in_fluid $src/cases/rigid/sliding_block2d.toml 0.3
 container_reduced $src/cases/papers/container_dambreak2d_reduced.toml 0.02

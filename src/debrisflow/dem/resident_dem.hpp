@@ -191,8 +191,15 @@ private:
     void upload_faces() {
         const auto& prims = host_.walls_.primitives();
         prims_.upload(prims.data(), Index(prims.size()));
+        const auto& corners = host_.walls_.corners();
+        corners_.upload(corners.data(), Index(corners.size()));
         faces_stale_ = false;
     }
+
+    // The grains' contacts on triangles on moving nodes (FEM surfaces) in this evaluation, to
+    // the host, where their impulse -h w_a f goes to the corners in slot order, as the host's
+    // slot pass hands it (DemSolver::own_slots): stream compaction of the touching slots.
+    void scatter_nodal_impulse(Real h);
 
     // --- the step (DemSolver::advance and step) ------------------------------------------
     void advance(Real dt) {
@@ -343,6 +350,11 @@ private:
     Buffer<WallState> wall_states_;
     Buffer<Index> active_;
     Buffer<PrimitiveBounds> bounds_;
+    // triangles on moving nodes (FEM surfaces): corners, the nodes' velocities, the contacts
+    Buffer<NodalCorners> corners_;
+    Buffer<Vec3> node_v_;
+    Buffer<Index> nodal_flag_, nodal_at_;
+    Buffer<NodalContact> nodal_rows_;
     Buffer<Index> bin_start_, bin_items_, bin_always_; // WallBins of many faces
     std::vector<Index> active_host_;
     std::vector<PrimitiveBounds> bounds_host_;

@@ -18,8 +18,14 @@ template <class Space> void ResidentDem<Space>::forces(Real half_kick, bool coll
     auto& wl = host_.walls_.walls();
     for (auto& w : wl) w.contacts.clear();
     recorded_ = false; // this evaluation's contact loads are still where the grains are
-    // the walls' states (few: every evaluation) and their faces if they moved
-    if (faces_stale_) upload_faces();
+    // the walls' states (few: every evaluation) and their faces if they moved; a FEM solid's
+    // surface moves with its nodes at every FEM step
+    const bool nodal = !host_.walls_.corners().empty();
+    if (faces_stale_ || nodal) upload_faces();
+    if (nodal) {
+        const auto& v = host_.walls_.nodes().v;
+        node_v_.upload(v.data(), Index(v.size()));
+    }
     const auto& states = host_.refresh_wall_states();
     wall_states_.upload(states.data(), Index(states.size()));
     if (n_ == 0) {
@@ -58,6 +64,8 @@ template <class Space> void ResidentDem<Space>::forces(Real half_kick, bool coll
     in.half = half_kick;
     in.plane = host_.params_.dim == 2;
     in.prims = prims_.data();
+    in.corners = nodal ? corners_.data() : nullptr;
+    in.node_v = nodal ? node_v_.data() : nullptr;
     in.walls = wall_states_.data();
     in.wall_partner = wall_.partner.data();
     in.wall_count = wall_.count.data();
@@ -129,9 +137,37 @@ template <class Space> void ResidentDem<Space>::forces(Real half_kick, bool coll
         }
         o->time += h;
     }
+    if (nodal && ends_step) scatter_nodal_impulse(h);
     if (host_.fluid_ && ends_step) host_.fluid_->time += h;
     host_.contacts_ = gg.touching + own.touching;
     host_.sum_contact_force_ = measure ? gg.force_sum + own.force_sum : 0;
+}
+
+template <class Space> void ResidentDem<Space>::scatter_nodal_impulse(Real h) {
+    const Index slots = n_ * wall_.cap;
+    nodal_flag_.resize(slots);
+    nodal_at_.resize(slots);
+    Space::for_each(slots,
+                    FlagNodalSlots{wall_.count.data(), wall_.partner.data(), wall_touching_.data(),
+                                   prims_.data(), wall_.cap, nodal_flag_.data()});
+    const Index m = Space::exclusive_scan(slots, nodal_flag_.data(), nodal_at_.data());
+    if (m == 0) return;
+    nodal_rows_.resize(m);
+    Space::for_each(slots,
+                    GatherNodalContacts{wall_.partner.data(), wall_out_.data(), nodal_flag_.data(),
+                                        nodal_at_.data(), nodal_rows_.data()});
+    std::vector<NodalContact> rows(static_cast<std::size_t>(m));
+    nodal_rows_.download(rows.data());
+    const auto& prims = host_.walls_.primitives();
+    const auto& corners = host_.walls_.corners();
+    std::vector<Vec3>& impulse = host_.walls_.nodes().impulse;
+    for (const NodalContact& c : rows) {
+        const WallPrimitive& pr = prims[std::size_t(c.prim)];
+        const NodalCorners& nc = corners[std::size_t(pr.corners)];
+        const Vec3 bw = barycentric(c.q, pr.a, pr.b, pr.c);
+        for (int a = 0; a < 3; ++a)
+            impulse[std::size_t(nc.node[std::size_t(a)])] += (-h * bw[a]) * c.f;
+    }
 }
 
 } // namespace debrisflow::dem

@@ -24,10 +24,11 @@ std::string backend_words(const std::string& backend) {
            (backend == "cuda" ? "on the CUDA device"
                               : "in the host's memory and run on its threads, the device's code "
                                 "path") +
-           "; walls and rigid bodies moved on the host (a body's contact spheres go there, its "
-           "load comes back); grains are copied to the host only for the probes that read them, "
-           "frames, checkpoints and the end (of grains that leave, only their masses, materials "
-           "and faces; of a feed's region, the grains near it)";
+           "; walls, rigid bodies and FEM solids moved on the host (a body's contact spheres and "
+           "a solid's surface go there, their loads come back); grain probes evaluated there, "
+           "except run-out and a pressure map with grain contacts; grains are copied to the host "
+           "only for those two, frames, checkpoints and the end (of grains that leave, only "
+           "their masses, materials and faces; of a feed's region, the grains near it)";
 }
 
 std::unique_ptr<ResidentDemPhase> make_resident_dem(const std::string& backend, DemSolver& host,

@@ -2,11 +2,12 @@
 // The small per-grain steps of the resident DEM loop (dem/resident_dem.hpp) that the host
 // solver does with its own containers: the contact pass's copy of the grain state, the grains'
 // bounding box (dem/grain_bounds_k.hpp), the keys of the reverse index, and the flags of the
-// grains that leave (outlets, the domain exit) or that a feed's new grains must keep clear of.
-// Host/device functors.
+// grains that leave (outlets, the domain exit) or that a feed's new grains must keep clear of,
+// and the contacts on a FEM solid's surface whose impulse goes to its nodes. Host/device functors.
 #include "debrisflow/core/domain.hpp"
 #include "debrisflow/dem/grain_bounds_k.hpp"
 #include "debrisflow/dem/grain_contact_k.hpp"
+#include "debrisflow/dem/wall_geometry_k.hpp"
 #include "debrisflow/flow/exit_faces_k.hpp"
 #include "debrisflow/flow/feed_reach_k.hpp"
 #include "debrisflow/flow/outlet_box_k.hpp"
@@ -106,6 +107,43 @@ struct GrainMass {
     DF_HD Real operator()(Index i) const { return mass[i]; }
 };
 
+// A grain's contact with a triangle on moving nodes (a FEM solid's surface, DEM-FEM): the
+// primitive, the force on the grain and the contact point, which the host turns into the
+// corners' impulse with the barycentric weights (DemSolver's slot pass, in slot order).
+struct NodalContact {
+    Index prim;
+    Vec3 f, q;
+};
+
+// flag[s] = 1 for wall slot s (grain s / cap, row s % cap) in use, touching, on a triangle on
+// moving nodes.
+struct FlagNodalSlots {
+    const Index *count, *partner;
+    const std::uint8_t* touching;
+    const WallPrimitive* prims;
+    Index cap;
+    Index* flag;
+    DF_HD void operator()(Index s) const {
+        flag[s] = s % cap < count[s / cap] && touching[s] && prims[partner[s]].corners >= 0;
+    }
+};
+
+// Row at[s] of the flagged slots from the per-grain pass's output (force 0-2, point 3-5).
+struct GatherNodalContacts {
+    const Index* partner;
+    const Real* out; // 9 per slot
+    const Index *flag, *at;
+    NodalContact* rows;
+    DF_HD void operator()(Index s) const {
+        if (!flag[s]) return;
+        const Real* o = out + 9 * s;
+        rows[at[s]] = {partner[s], {o[0], o[1], o[2]}, {o[3], o[4], o[5]}};
+    }
+};
+
+static_assert(std::is_trivially_copyable_v<NodalContact>);
+static_assert(std::is_trivially_copyable_v<FlagNodalSlots>);
+static_assert(std::is_trivially_copyable_v<GatherNodalContacts>);
 static_assert(std::is_trivially_copyable_v<LoadHot>);
 static_assert(std::is_trivially_copyable_v<GrainKeepOutsideBox>);
 static_assert(std::is_trivially_copyable_v<GrainKeepInsideDomain>);

@@ -124,7 +124,8 @@ template <class Space> auto ResidentDem<Space>::memory_bytes() const -> std::siz
         cl_orient_.bytes() + cl_mass_.bytes() + cl_first_.bytes() + cl_member_.bytes() +
         clump_of_.bytes() + index_of_id_.bytes() + vec_scratch_.bytes() + real_scratch_.bytes() +
         index_scratch_.bytes() + key_scratch_.bytes() + byte_scratch_.bytes() + keep_.bytes() +
-        leave_.bytes() + at_.bytes() + reader_.bytes();
+        leave_.bytes() + at_.bytes() + reader_.bytes() + corners_.bytes() + node_v_.bytes() +
+        nodal_flag_.bytes() + nodal_at_.bytes() + nodal_rows_.bytes();
     return b + sorter_.bytes() + reverse_sorter_.bytes() + sphere_sorter_.bytes();
 }
 

@@ -201,9 +201,11 @@ namespace {
 // meshes (fixed, moving, removed by remove_at), rigid bodies as obstacles (their contact
 // spheres uploaded when they move, each body's load reduced where the grains are, the bodies
 // moved on the host), clumps of grains (one that leaves is removed on the host), settling (on the
-// host, before the loop), the domain exit, outlets and grain feeds, every grain probe. Fluid and
-// grains together, with their unresolved coupling (coupling/resident_sph_dem.hpp). Anything else is
-// rejected here, so that `check` rejects it too.
+// host, before the loop), the domain exit, outlets and grain feeds, every grain probe, FEM solids
+// that grains touch (their surface triangles moved with the nodes, the contacts' impulse handed to
+// the nodes on the host; the FEM steps on the host). Fluid and grains together, with their
+// unresolved coupling (coupling/resident_sph_dem.hpp). A fluid with FEM solids (the SPH-FEM
+// coupling's boundary particles) is rejected here, so that `check` rejects it too.
 void require_backend_supports(const CaseSpec& c) {
     if (c.backend == "host") return;
     const auto no = [&](bool present, const std::string& what) {
@@ -211,12 +213,12 @@ void require_backend_supports(const CaseSpec& c) {
             throw InputError(fmt::format(
                 "{}: exec.backend = \"{}\" runs fluid (with walls, inlets, outlets and rigid "
                 "bodies) and grains (with walls, gates, feeds, outlets, rigid bodies, clumps, "
-                "the domain exit and the fluid's drag) so far, not FEM solids; this case has {} "
-                "(use exec.backend = \"host\")",
+                "FEM solids, the domain exit and the fluid's drag) so far, not a fluid with FEM "
+                "solids; this case has {} (use exec.backend = \"host\")",
                 c.exec_origin.at("backend"), c.backend, what));
     };
     no(c.fluids.empty() && !c.has_dem, "neither fluid nor grains");
-    no(c.has_fem(), "FEM solids");
+    no(!c.fluids.empty() && c.has_fem(), "a fluid with FEM solids");
 }
 
 } // namespace
