@@ -440,9 +440,10 @@ every = 0.005
     // no probe reads the grains in the run: the one copy to the host is the end's
     EXPECT_EQ(s.copies_to_host, 1);
 }
-// Spheres falling into a box onto a floor mapped by pressure panels: the publish before each
-// sample of the map brings back the floor's contact loads of the last evaluation, recorded in
-// the host slot pass's order.
+// Spheres falling into a box onto a floor mapped by pressure panels: before each sample of the
+// map the floor's contact loads of the last evaluation come back (the touching slots on the
+// floor, compacted where the grains are), recorded in the host slot pass's order; the grains
+// themselves are not copied for it.
 // Glass spheres' material and a 0.2 m square glass box: a floor (a box wall, which a pressure
 // map can read) and four side planes.
 constexpr const char* glass_box = R"(
@@ -519,6 +520,7 @@ every = 0.005
     for (const auto& row : s.probes[0]) // time, then the panels' columns
         for (std::size_t k = 1; k < row.size(); ++k) largest = std::max(largest, row[k]);
     EXPECT_GT(largest, 0);
+    EXPECT_EQ(s.copies_to_host, 1); // the end's
 }
 
 // Rigid bodies as obstacles (issue #34: "their obstacle spheres live on the device, the

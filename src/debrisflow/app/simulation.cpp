@@ -326,12 +326,15 @@ RunReport Simulation::run(const RunOptions& opt) {
     for (auto& p : probes_) {
         probes::Probe* raw = p.get();
         // a probe that reads grains brings back the grains, not their contact slots nor the
-        // fluid (ResidentDemPhase::publish_grains)
+        // fluid (ResidentDemPhase::publish_grains); one that reads a wall's grain contacts
+        // brings back those contacts only (publish_wall_contacts)
         const bool grains = resident_dem_ && raw->reads_grains();
+        const bool contacts = resident_dem_ && raw->contact_wall() >= 0;
         integ.add_observer(
             time::Schedule::every_time(p->every()),
-            [this, raw, grains](const time::StepInfo& s) {
+            [this, raw, grains, contacts](const time::StepInfo& s) {
                 if (grains) resident_dem_->publish_grains();
+                if (contacts && !grains) resident_dem_->publish_wall_contacts();
                 raw->record(s.t, probe_context());
             },
             raw->reads_particles());

@@ -113,6 +113,10 @@ public:
         if (resident_) download_grains();
     }
 
+    void publish_wall_contacts() override {
+        if (resident_) record_wall_contacts();
+    }
+
     probes::GrainReader& grain_reader() override { return reader_; }
 
     void reload() override {
@@ -162,8 +166,9 @@ private:
     Leaving remove_with_clumps(const flow::ExitFaces* faces);
 
     // The contact loads of the last evaluation on the walls that keep them (a pressure map
-    // reads them), in grain and slot order as the host's slot pass records them: each touching
-    // wall slot's force and point, brought to the host once per evaluation when asked for.
+    // reads them), in grain and slot order as the host's slot pass records them: the touching
+    // slots' forces and points on those walls, brought to the host once per evaluation when
+    // asked for.
     void record_wall_contacts();
 
     // values[i] of the m items with flags[i], in index order (at_ holds the flags' scan).
@@ -196,9 +201,12 @@ private:
         faces_stale_ = false;
     }
 
-    // The grains' contacts on triangles on moving nodes (FEM surfaces) in this evaluation, to
-    // the host, where their impulse -h w_a f goes to the corners in slot order, as the host's
-    // slot pass hands it (DemSolver::own_slots): stream compaction of the touching slots.
+    // The touching wall slots of the last evaluation on triangles on moving nodes (nodal) or on
+    // walls that record their contacts, in grain and slot order: stream compaction of the
+    // slots, only these rows come to the host.
+    std::vector<WallContactRow> wall_contacts(bool nodal);
+    // The contacts on FEM surfaces in this evaluation hand their impulse -h w_a f to the corners
+    // in slot order, as the host's slot pass does (DemSolver::own_slots).
     void scatter_nodal_impulse(Real h);
 
     // --- the step (DemSolver::advance and step) ------------------------------------------
@@ -350,11 +358,11 @@ private:
     Buffer<WallState> wall_states_;
     Buffer<Index> active_;
     Buffer<PrimitiveBounds> bounds_;
-    // triangles on moving nodes (FEM surfaces): corners, the nodes' velocities, the contacts
+    // triangles on moving nodes (FEM surfaces): corners, the nodes' velocities
     Buffer<NodalCorners> corners_;
     Buffer<Vec3> node_v_;
-    Buffer<Index> nodal_flag_, nodal_at_;
-    Buffer<NodalContact> nodal_rows_;
+    Buffer<Index> contact_flag_, contact_at_; // the wall contacts brought back
+    Buffer<WallContactRow> contact_rows_;
     Buffer<Index> bin_start_, bin_items_, bin_always_; // WallBins of many faces
     std::vector<Index> active_host_;
     std::vector<PrimitiveBounds> bounds_host_;

@@ -44,6 +44,9 @@ public:
     // the last evaluation: what a probe that reads grains needs, about a tenth of publish()'s
     // bytes per grain.
     virtual void publish_grains() = 0;
+    // The grain contacts of the last evaluation on the walls that record them (a pressure map
+    // reads them) to those walls, and nothing else.
+    virtual void publish_wall_contacts() = 0;
     // The grain probes' sums, maxima and rows, evaluated where the grains are
     // (dem/resident_grain_reader.hpp).
     virtual probes::GrainReader& grain_reader() = 0;

@@ -143,25 +143,31 @@ template <class Space> void ResidentDem<Space>::forces(Real half_kick, bool coll
     host_.sum_contact_force_ = measure ? gg.force_sum + own.force_sum : 0;
 }
 
-template <class Space> void ResidentDem<Space>::scatter_nodal_impulse(Real h) {
+template <class Space>
+auto ResidentDem<Space>::wall_contacts(bool nodal) -> std::vector<WallContactRow> {
     const Index slots = n_ * wall_.cap;
-    nodal_flag_.resize(slots);
-    nodal_at_.resize(slots);
+    contact_flag_.resize(slots);
+    contact_at_.resize(slots);
     Space::for_each(slots,
-                    FlagNodalSlots{wall_.count.data(), wall_.partner.data(), wall_touching_.data(),
-                                   prims_.data(), wall_.cap, nodal_flag_.data()});
-    const Index m = Space::exclusive_scan(slots, nodal_flag_.data(), nodal_at_.data());
-    if (m == 0) return;
-    nodal_rows_.resize(m);
+                    FlagWallContacts{wall_.count.data(), wall_.partner.data(),
+                                     wall_touching_.data(), prims_.data(), wall_states_.data(),
+                                     wall_.cap, nodal, contact_flag_.data()});
+    const Index m = Space::exclusive_scan(slots, contact_flag_.data(), contact_at_.data());
+    std::vector<WallContactRow> rows(static_cast<std::size_t>(m));
+    if (m == 0) return rows;
+    contact_rows_.resize(m);
     Space::for_each(slots,
-                    GatherNodalContacts{wall_.partner.data(), wall_out_.data(), nodal_flag_.data(),
-                                        nodal_at_.data(), nodal_rows_.data()});
-    std::vector<NodalContact> rows(static_cast<std::size_t>(m));
-    nodal_rows_.download(rows.data());
+                    GatherWallContacts{wall_.partner.data(), wall_out_.data(), contact_flag_.data(),
+                                       contact_at_.data(), contact_rows_.data()});
+    contact_rows_.download(rows.data());
+    return rows;
+}
+
+template <class Space> void ResidentDem<Space>::scatter_nodal_impulse(Real h) {
     const auto& prims = host_.walls_.primitives();
     const auto& corners = host_.walls_.corners();
     std::vector<Vec3>& impulse = host_.walls_.nodes().impulse;
-    for (const NodalContact& c : rows) {
+    for (const WallContactRow& c : wall_contacts(true)) {
         const WallPrimitive& pr = prims[std::size_t(c.prim)];
         const NodalCorners& nc = corners[std::size_t(pr.corners)];
         const Vec3 bw = barycentric(c.q, pr.a, pr.b, pr.c);

@@ -25,10 +25,10 @@ std::string backend_words(const std::string& backend) {
                               : "in the host's memory and run on its threads, the device's code "
                                 "path") +
            "; walls, rigid bodies and FEM solids moved on the host (a body's contact spheres and "
-           "a solid's surface go there, their loads come back); grain probes evaluated there, "
-           "except run-out and a pressure map with grain contacts; grains are copied to the host "
-           "only for those two, frames, checkpoints and the end (of grains that leave, only "
-           "their masses, materials and faces; of a feed's region, the grains near it)";
+           "a solid's surface go there, their loads come back); grain probes evaluated there "
+           "(a pressure map gets its wall's contacts); grains are copied to the host only for "
+           "run-out probes, frames, checkpoints and the end (of grains that leave, only their "
+           "masses, materials and faces; of a feed's region, the grains near it)";
 }
 
 std::unique_ptr<ResidentDemPhase> make_resident_dem(const std::string& backend, DemSolver& host,

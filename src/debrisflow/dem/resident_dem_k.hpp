@@ -3,10 +3,12 @@
 // solver does with its own containers: the contact pass's copy of the grain state, the grains'
 // bounding box (dem/grain_bounds_k.hpp), the keys of the reverse index, and the flags of the
 // grains that leave (outlets, the domain exit) or that a feed's new grains must keep clear of,
-// and the contacts on a FEM solid's surface whose impulse goes to its nodes. Host/device functors.
+// and the wall contacts brought to the host (on a FEM solid's surface, whose impulse goes to its
+// nodes; on a wall a pressure map reads). Host/device functors.
 #include "debrisflow/core/domain.hpp"
 #include "debrisflow/dem/grain_bounds_k.hpp"
 #include "debrisflow/dem/grain_contact_k.hpp"
+#include "debrisflow/dem/grain_own_pass_k.hpp"
 #include "debrisflow/dem/wall_geometry_k.hpp"
 #include "debrisflow/flow/exit_faces_k.hpp"
 #include "debrisflow/flow/feed_reach_k.hpp"
@@ -107,33 +109,42 @@ struct GrainMass {
     DF_HD Real operator()(Index i) const { return mass[i]; }
 };
 
-// A grain's contact with a triangle on moving nodes (a FEM solid's surface, DEM-FEM): the
-// primitive, the force on the grain and the contact point, which the host turns into the
-// corners' impulse with the barycentric weights (DemSolver's slot pass, in slot order).
-struct NodalContact {
+// A grain's contact with a wall's primitive, brought to the host: the primitive, the force on
+// the grain and the contact point. Of a triangle on moving nodes (a FEM solid's surface,
+// DEM-FEM) the host turns it into the corners' impulse with the barycentric weights; of a wall
+// that records its contacts (a pressure map reads them) it keeps it (DemSolver's slot pass, in
+// slot order).
+struct WallContactRow {
     Index prim;
     Vec3 f, q;
 };
 
-// flag[s] = 1 for wall slot s (grain s / cap, row s % cap) in use, touching, on a triangle on
-// moving nodes.
-struct FlagNodalSlots {
+// flag[s] = 1 for wall slot s (grain s / cap, row s % cap) in use and touching, on a triangle on
+// moving nodes (nodal) or on a wall that records its contacts (not nodal).
+struct FlagWallContacts {
     const Index *count, *partner;
     const std::uint8_t* touching;
     const WallPrimitive* prims;
+    const WallState* walls;
     Index cap;
+    bool nodal;
     Index* flag;
     DF_HD void operator()(Index s) const {
-        flag[s] = s % cap < count[s / cap] && touching[s] && prims[partner[s]].corners >= 0;
+        bool pick = s % cap < count[s / cap] && touching[s];
+        if (pick) {
+            const WallPrimitive& pr = prims[partner[s]];
+            pick = nodal ? pr.corners >= 0 : walls[pr.wall].record;
+        }
+        flag[s] = pick ? 1 : 0;
     }
 };
 
 // Row at[s] of the flagged slots from the per-grain pass's output (force 0-2, point 3-5).
-struct GatherNodalContacts {
+struct GatherWallContacts {
     const Index* partner;
     const Real* out; // 9 per slot
     const Index *flag, *at;
-    NodalContact* rows;
+    WallContactRow* rows;
     DF_HD void operator()(Index s) const {
         if (!flag[s]) return;
         const Real* o = out + 9 * s;
@@ -141,9 +152,9 @@ struct GatherNodalContacts {
     }
 };
 
-static_assert(std::is_trivially_copyable_v<NodalContact>);
-static_assert(std::is_trivially_copyable_v<FlagNodalSlots>);
-static_assert(std::is_trivially_copyable_v<GatherNodalContacts>);
+static_assert(std::is_trivially_copyable_v<WallContactRow>);
+static_assert(std::is_trivially_copyable_v<FlagWallContacts>);
+static_assert(std::is_trivially_copyable_v<GatherWallContacts>);
 static_assert(std::is_trivially_copyable_v<LoadHot>);
 static_assert(std::is_trivially_copyable_v<GrainKeepOutsideBox>);
 static_assert(std::is_trivially_copyable_v<GrainKeepInsideDomain>);

@@ -125,7 +125,7 @@ template <class Space> auto ResidentDem<Space>::memory_bytes() const -> std::siz
         clump_of_.bytes() + index_of_id_.bytes() + vec_scratch_.bytes() + real_scratch_.bytes() +
         index_scratch_.bytes() + key_scratch_.bytes() + byte_scratch_.bytes() + keep_.bytes() +
         leave_.bytes() + at_.bytes() + reader_.bytes() + corners_.bytes() + node_v_.bytes() +
-        nodal_flag_.bytes() + nodal_at_.bytes() + nodal_rows_.bytes();
+        contact_flag_.bytes() + contact_at_.bytes() + contact_rows_.bytes();
     return b + sorter_.bytes() + reverse_sorter_.bytes() + sphere_sorter_.bytes();
 }
 
@@ -260,24 +260,9 @@ template <class Space> void ResidentDem<Space>::record_wall_contacts() {
     bool any = false;
     for (const auto& w : wl) any = any || w.record_contacts;
     if (!any) return;
-    std::vector<Index> count(static_cast<std::size_t>(n_)),
-        partner(static_cast<std::size_t>(wall_.partner.size()));
-    std::vector<std::uint8_t> touching(static_cast<std::size_t>(wall_touching_.size()));
-    std::vector<Real> out(static_cast<std::size_t>(wall_out_.size()));
-    wall_.count.download(count.data());
-    wall_.partner.download(partner.data());
-    wall_touching_.download(touching.data());
-    wall_out_.download(out.data());
     const auto& prims = host_.walls_.primitives();
-    for (std::size_t i = 0; i < count.size(); ++i)
-        for (Index k = 0; k < count[i]; ++k) {
-            const std::size_t s = i * std::size_t(wall_.cap) + std::size_t(k);
-            if (!touching[s]) continue;
-            auto& w = wl[std::size_t(prims[std::size_t(partner[s])].wall)];
-            if (!w.record_contacts) continue;
-            const Real* o = out.data() + 9 * s;
-            w.contacts.push_back({{o[3], o[4], o[5]}, {-o[0], -o[1], -o[2]}});
-        }
+    for (const WallContactRow& c : wall_contacts(false))
+        wl[std::size_t(prims[std::size_t(c.prim)].wall)].contacts.push_back({c.q, -c.f});
 }
 
 } // namespace debrisflow::dem

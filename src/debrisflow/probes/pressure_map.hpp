@@ -28,7 +28,6 @@ public:
                      const io::CaseSpec& c);
     int contact_wall() const override { return wall_; }
     bool reads_particles() const override { return false; } // the wall's rows, ctx.fluid
-    bool reads_grains() const override { return true; }     // their contacts on the wall
     std::vector<std::string> columns() const override;
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
     void open_extra(const std::string& dir) override;
