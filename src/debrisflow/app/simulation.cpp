@@ -325,16 +325,13 @@ RunReport Simulation::run(const RunOptions& opt) {
         });
     for (auto& p : probes_) {
         probes::Probe* raw = p.get();
-        // a probe that reads grains brings back the grains, not their contact slots nor the
-        // fluid (ResidentDemPhase::publish_grains); one that reads a wall's grain contacts
-        // brings back those contacts only (publish_wall_contacts)
-        const bool grains = resident_dem_ && raw->reads_grains();
+        // the grain probes read the grains where they are (ctx.grains); one that reads a wall's
+        // grain contacts brings back those contacts only (publish_wall_contacts)
         const bool contacts = resident_dem_ && raw->contact_wall() >= 0;
         integ.add_observer(
             time::Schedule::every_time(p->every()),
-            [this, raw, grains, contacts](const time::StepInfo& s) {
-                if (grains) resident_dem_->publish_grains();
-                if (contacts && !grains) resident_dem_->publish_wall_contacts();
+            [this, raw, contacts](const time::StepInfo& s) {
+                if (contacts) resident_dem_->publish_wall_contacts();
                 raw->record(s.t, probe_context());
             },
             raw->reads_particles());

@@ -109,10 +109,6 @@ public:
     // The grains, their contact state and slots to the host's GrainSet and DemSolver.
     void publish() override;
 
-    void publish_grains() override {
-        if (resident_) download_grains();
-    }
-
     void publish_wall_contacts() override {
         if (resident_) record_wall_contacts();
     }

@@ -39,11 +39,6 @@ public:
     // Times the grains were copied to the host (publish) and from it (reload).
     virtual long copies_to_host() const = 0;
     virtual long copies_from_host() const = 0;
-    // The grains' state without their contact slots (positions, velocities, spins, forces,
-    // sizes, materials, ids, clumps) to the host's GrainSet, and the walls' contact loads of
-    // the last evaluation: what a probe that reads grains needs, about a tenth of publish()'s
-    // bytes per grain.
-    virtual void publish_grains() = 0;
     // The grain contacts of the last evaluation on the walls that record them (a pressure map
     // reads them) to those walls, and nothing else.
     virtual void publish_wall_contacts() = 0;

@@ -26,9 +26,9 @@ std::string backend_words(const std::string& backend) {
                                 "path") +
            "; walls, rigid bodies and FEM solids moved on the host (a body's contact spheres and "
            "a solid's surface go there, their loads come back); grain probes evaluated there "
-           "(a pressure map gets its wall's contacts); grains are copied to the host only for "
-           "run-out probes, frames, checkpoints and the end (of grains that leave, only their "
-           "masses, materials and faces; of a feed's region, the grains near it)";
+           "(a pressure map gets its wall's contacts, a run-out each grain's row); grains are "
+           "copied to the host only for frames, checkpoints and the end (of grains that leave, "
+           "only their masses, materials and faces; of a feed's region, the grains near it)";
 }
 
 std::unique_ptr<ResidentDemPhase> make_resident_dem(const std::string& backend, DemSolver& host,

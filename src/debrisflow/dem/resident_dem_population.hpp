@@ -1,6 +1,6 @@
 #pragma once
 // The resident DEM phase's population (dem/resident_dem.hpp, included at its end): taking the
-// host's grains over, bringing them back (publish, publish_grains), grains near a feed's region,
+// host's grains over, bringing them back (publish), grains near a feed's region,
 // a feed's new grains appended, and grains that leave through an outlet or the domain's faces
 // removed by stream compaction (DemSolver::remove_grains on the host).
 #include <cmath>

@@ -143,6 +143,7 @@ struct GrainIdOf {
 // A grain that a probe reads on the host (GrainReader::rows): the few it selects.
 struct GrainRow {
     std::uint32_t id = 0;
+    std::int32_t clump = -1; // its clump, or -1
     Vec3 pos, vel;
     Real radius = 0, mass = 0;
     Real volume = 0; // m / rho_s
@@ -166,6 +167,7 @@ struct GatherGrainRows {
         if (!flag[i]) return;
         GrainRow& r = out[at[i]];
         r.id = g.id[i], r.pos = g.pos[i], r.vel = g.vel[i];
+        r.clump = g.clump_of ? g.clump_of[g.id[i]] : -1;
         r.radius = g.radius[i], r.mass = g.mass[i];
         r.volume = g.mass[i] / density[g.material[i]];
     }

@@ -65,11 +65,8 @@ public:
     Real every() const { return every_; }
     // Whether a sample reads the particle arrays on the host (ctx.sph's set, published from a
     // resident backend first); false for probes that read only a FluidReader, the bodies,
-    // the grains or their own tallies.
+    // the grains (through ctx.grains, a GrainReader) or their own tallies.
     virtual bool reads_particles() const { return true; }
-    // Whether a sample reads the grains on the host (ctx.dem's GrainSet, published from a
-    // resident DEM phase first); false for probes that read only a GrainReader.
-    virtual bool reads_grains() const { return false; }
     // Opens probes/<name>.csv in `dir`; probes with field output also open their VTK series.
     void open(const std::string& dir);
     virtual void open_extra(const std::string& /*dir*/) {}

@@ -1,5 +1,6 @@
 #include "debrisflow/probes/runout_probe.hpp"
 #include "debrisflow/dem/dem_solver.hpp"
+#include "debrisflow/probes/grain_reader.hpp"
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -148,15 +149,22 @@ std::unique_ptr<Probe> RunoutProbe::from_config(const ProbeSetup& s) {
                                          s.t.real("bed", s.c.domain.lo.z), gap);
 }
 
+// Every grain's row, in id order, from where the grains are (GrainReader::rows).
 std::vector<Real> RunoutProbe::sample(Real, const ProbeContext& ctx) {
-    const auto& g = ctx.dem->grains();
+    const Real far = std::numeric_limits<Real>::max();
+    const std::vector<GrainRow> rows = ctx.grains->rows({{-far, -far, -far}, {far, far, far}});
+    if (rows.empty()) return {0, 0, 0, 0, 0, 0};
+    std::vector<Vec3> pos;
+    std::vector<Real> radius, mass;
     std::vector<std::int32_t> clump;
-    if (g.clumps.size() > 0) {
-        clump.resize(std::size_t(g.size()));
-        for (Index i = 0; i < g.size(); ++i) clump[std::size_t(i)] = ctx.dem->clump_of(i);
+    bool clumps = false;
+    for (const GrainRow& r : rows) {
+        pos.push_back(r.pos), radius.push_back(r.radius), mass.push_back(r.mass);
+        clump.push_back(r.clump);
+        clumps = clumps || r.clump >= 0;
     }
-    if (g.size() == 0) return {0, 0, 0, 0, 0, 0};
-    const Runout r = measure_runout(g.pos, g.radius, g.mass, clump, axis_, sign_, bed_, gap_);
+    if (!clumps) clump.clear();
+    const Runout r = measure_runout(pos, radius, mass, clump, axis_, sign_, bed_, gap_);
     return {r.front, r.front_95, r.front_max, r.height, Real(r.detached), r.detached_mass};
 }
 

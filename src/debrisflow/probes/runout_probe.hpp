@@ -38,8 +38,7 @@ public:
                 "height [m]", "detached [-]", "detached_mass [kg]"};
     }
     std::vector<Real> sample(Real t, const ProbeContext& ctx) override;
-    bool reads_particles() const override { return false; } // the grains (and bodies)
-    bool reads_grains() const override { return true; }
+    bool reads_particles() const override { return false; } // ctx.grains' rows
 
 private:
     int axis_, sign_;
