@@ -93,7 +93,7 @@ public:
 protected:
     // Stream compaction of the selected grains' rows (flags, their exclusive scan, a gather).
     std::vector<probes::GrainRow> select(const probes::GrainBox& box) const override {
-        if (!dem_.resident_) return host_select(box);
+        if (!dem_.resident_) return host_.rows(box); // sorted again by rows(): cheap
         const probes::GrainsRead g = grains();
         flag_.resize(g.n);
         at_.resize(g.n);
@@ -112,10 +112,6 @@ private:
         std::vector<Real> out(static_cast<std::size_t>(b.size()));
         if (!out.empty()) b.download(out.data());
         return out;
-    }
-
-    std::vector<probes::GrainRow> host_select(const probes::GrainBox& box) const {
-        return host_.rows(box); // in id order already; rows() sorts again
     }
 
     probes::GrainsRead grains() const {
