@@ -2,8 +2,8 @@
 # The prepared device check of the resident SPH loop (issue #33), for a session that has a GPU:
 # one call, a few minutes. Builds the CLI with the CUDA backend, runs the 3D dam break to 0.05 s
 # with --backend cuda and with --backend host_resident and compares their probes
-# (tools/compare_probes.py), the same for a gate with an inlet and an outlet and for the
-# floating box, then times the device at 0.18, 0.79 and 2.2 M particles (200
+# (tools/compare_probes.py), the same for a gate with an inlet and an outlet, the floating box
+# and water against an elastic wall, then times the device at 0.18, 0.79 and 2.2 M particles (200
 # steps each) and the host's resident loop at 0.18 M on every core. Prints the figures that go
 # into docs/performance.md ("The resident loop on a GPU"); writes its runs under $OUT (or /tmp).
 set -euo pipefail
@@ -37,8 +37,10 @@ report "cuda, 0.05 s" "$out/cuda"
 python3 tools/compare_probes.py "$out/host" "$out/cuda" --tolerance 1e-6 \
     || echo "DIFFERENCE: the device's probes differ from the host's beyond 1e-6"
 
-# Inlet, outlet and gate; a floating body (loads reduced per body on the device).
-for extra in validation/gate_inlet_outlet2d.toml:0.3 rigid/floating_box2d.toml:0.2; do
+# Inlet, outlet and gate; a floating body (loads reduced per body on the device); an elastic
+# wall (SPH-FEM: the carried particles moved from the nodes, their loads compacted there).
+for extra in validation/gate_inlet_outlet2d.toml:0.3 rigid/floating_box2d.toml:0.2 \
+    fem/water_on_elastic_wall2d.toml:0.1; do
     name=$(basename "${extra%%:*}" .toml)
     for b in host_resident cuda; do
         "$exe" run "cases/${extra%%:*}" --out "$out/${name}_$b" --backend $b \

@@ -6,8 +6,9 @@
 # a mass flux, a discharge and a trapping probe on both loops), rigid-body cases (a block sliding in water; the
 # reduced container case; a hinged disc and a box on a spring falling into grains, on the host's
 # DEM loop and on the resident one; mesh rocks
-# from a feed) and coupled cases (FEM alone, SPH-FEM, grains on a FEM plate and SPH-DEM drag on
-# the host's loops and on the resident ones, the SPH-DEM-FEM retaining dam), a run to T and the same run restarted from its checkpoint near
+# from a feed) and coupled cases (FEM alone; SPH-FEM, an eroding SPH-FEM wall, grains on a FEM
+# plate and SPH-DEM drag on the host's loops and on the resident ones; the SPH-DEM-FEM retaining
+# dam), a run to T and the same run restarted from its checkpoint near
 # T/2 write byte-identical probe files, VTK frames and final state (the final checkpoint holds
 # every array), at the same thread count. Also: a stop by SIGTERM writes a checkpoint to
 # continue from; a kill while a checkpoint is written leaves the previous one usable; damaged,
@@ -76,6 +77,9 @@ bodies_grains_joints_resident $inputs/restart_bodies_grains2d.toml 0.2 --backend
 rock_feed $inputs/restart_rock_feed3d.toml 0.6
 fem_cantilever $src/cases/fem/cantilever_steel.toml 0.02
 sph_fem_elastic_gate $src/cases/fem/elastic_gate2d.toml 0.06
+sph_fem_elastic_gate_resident $src/cases/fem/elastic_gate2d.toml 0.06 --backend host_resident
+sph_fem_eroding_wall $src/cases/fem/water_on_elastic_wall2d.toml 0.1 --set dp=0.01 --set fem_material.0.youngs_modulus=2e6 --set fem_material.0.erosion_strain=0.005 --set solid.0.max=[0.38,0.4] --set solid.0.divisions=[8,40] --set wall.0.max=[0.6,0.45] --set domain.max=[0.7,0.6]
+sph_fem_eroding_wall_resident $src/cases/fem/water_on_elastic_wall2d.toml 0.1 --backend host_resident --set dp=0.01 --set fem_material.0.youngs_modulus=2e6 --set fem_material.0.erosion_strain=0.005 --set solid.0.max=[0.38,0.4] --set solid.0.divisions=[8,40] --set wall.0.max=[0.6,0.45] --set domain.max=[0.7,0.6]
 sph_dem_drag_settling $src/cases/coupling/settling_grain.toml 0.1
 sph_dem_drag_settling_resident $src/cases/coupling/settling_grain.toml 0.1 --backend host_resident
 sph_dem_fem_retaining_dam $src/cases/papers/retaining_dam.toml 0.1

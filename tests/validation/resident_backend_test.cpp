@@ -26,6 +26,8 @@ struct State {
     long copies_to_host = -1;    // the resident SPH phase's copies of the particles
     long grain_copies = -1;      // the resident DEM phase's copies of the grains
     double vmax = 0;
+    long fem_eroded = 0;  // FEM elements eroded by the end
+    long ids_claimed = 0; // particle ids claimed during the run (inlets, exposed surfaces)
 };
 
 State run(const std::string& file, std::vector<std::string> sets, const std::string& backend,
@@ -33,8 +35,16 @@ State run(const std::string& file, std::vector<std::string> sets, const std::str
     sets.push_back("sph.pair_loop=\"cells\"");
     sets.push_back(fmt::format("exec.backend=\"{}\"", backend));
     app::Simulation sim(io::read_case(std::string(DEBRISFLOW_SOURCE_DIR) + "/" + file, sets));
+    const auto top_id = [&sim] {
+        ParticleId top = 0;
+        for (const ParticleId id : sim.particles().id) top = std::max(top, id + 1);
+        return top;
+    };
+    const ParticleId top_before = top_id();
     const auto report = sim.run({"", true, 0, until});
     State s;
+    s.fem_eroded = report.fem_eroded;
+    s.ids_claimed = long(top_id() - top_before);
     s.steps = report.result.steps;
     s.exits = report.fluid_exit.count;
     s.copies_to_host = report.sph_copies_to_host;
@@ -62,14 +72,19 @@ State run(const std::string& file, std::vector<std::string> sets, const std::str
 // largest; and over the probe samples against each column's largest magnitude.
 // `resident_copies`, `grain_copies`: where given, the resident run's copies of the particles and
 // of the grains to the host.
+// `host_state`: where given, the host run's state.
 void check(const std::string& file, const std::vector<std::string>& sets, Real until, double dp,
-           double rho0, long* resident_copies = nullptr, long* grain_copies = nullptr) {
+           double rho0, long* resident_copies = nullptr, long* grain_copies = nullptr,
+           State* host_state = nullptr) {
     const State host = run(file, sets, "host", until);
     const State resident = run(file, sets, "host_resident", until);
+    if (host_state) *host_state = host;
     if (resident_copies) *resident_copies = resident.copies_to_host;
     if (grain_copies) *grain_copies = resident.grain_copies;
     ASSERT_EQ(host.steps, resident.steps);
     ASSERT_EQ(host.count, resident.count);
+    EXPECT_EQ(host.fem_eroded, resident.fem_eroded);
+    EXPECT_EQ(host.ids_claimed, resident.ids_claimed);
     EXPECT_EQ(host.exits, resident.exits);
     ASSERT_EQ(host.probes.size(), resident.probes.size());
     for (std::size_t k = 0; k < host.probes.size(); ++k)
@@ -147,6 +162,33 @@ TEST(ResidentBackend, GateInletOutlet) {
 TEST(ResidentBackend, InletOutletVerlet) {
     check("cases/validation/gate_inlet_outlet2d.toml",
           {"output.vtk=false", "time.scheme=\"verlet\""}, 0.3, 0.01, 1000);
+}
+
+// Water against an elastic wall (SPH-FEM): the wall's carried boundary particles moved from the
+// nodes where the particles are (twice a step), their loads compacted in index order and handed
+// to the nodes on the host. The tip's displacement and the water's load are among the probes
+// compared; the particles are copied to the host once, at the end.
+TEST(ResidentBackend, WaterOnAnElasticWall) {
+    long copies = -1;
+    check("cases/fem/water_on_elastic_wall2d.toml", {"dp=0.01", "output.vtk=false"}, 0.1, 0.01,
+          1000, &copies);
+    EXPECT_EQ(copies, 1);
+}
+
+// The same wall made three times thicker and soft enough to erode (E = 2 MPa, erosion at a
+// principal strain of 0.005): eroded elements' particles removed by compaction where the
+// particles are, the exposed surface's new particles appended there with their rows (ids
+// claimed from the host's set), and every survivor's normal and depth set from the new
+// surface. The run must erode elements and expose new particles, or the test proves nothing.
+TEST(ResidentBackend, ErodingElasticWall) {
+    State host;
+    check("cases/fem/water_on_elastic_wall2d.toml",
+          {"dp=0.01", "output.vtk=false", "fem_material.0.youngs_modulus=2e6",
+           "fem_material.0.erosion_strain=0.005", "solid.0.max=[0.38,0.4]",
+           "solid.0.divisions=[8,40]", "wall.0.max=[0.6,0.45]", "domain.max=[0.7,0.6]"},
+          0.15, 0.01, 1000, nullptr, nullptr, &host);
+    EXPECT_GE(host.fem_eroded, 5);
+    EXPECT_GE(host.ids_claimed, 1);
 }
 
 // A floating box (Archimedes draft): the body's fluid force and moment reduced where the

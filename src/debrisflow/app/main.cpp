@@ -49,8 +49,8 @@ int check(const std::string& file, const std::vector<std::string>& sets) {
             spec.dp, spec.sph.kernel, spec.sph.h, spec.sph.c0, sph::wall_words(spec.sph),
             spec.backend == "host" ? sph::pair_loop_words(spec.sph) : "gathered over cells", d.dt,
             d.limiter);
-        std::cout << fmt::format("backend: {}\n",
-                                 sph::backend_words(spec.backend, spec.has_bodies()));
+        std::cout << fmt::format(
+            "backend: {}\n", sph::backend_words(spec.backend, spec.has_bodies(), spec.has_fem()));
     }
     if (sim.has_grains()) {
         const auto& d = sim.grains();

@@ -39,9 +39,11 @@ Simulation::Simulation(io::CaseSpec spec)
         }
         solver_ = std::make_unique<sph::SphSolver>(spec_.sph, set_, spec_.domain);
         host_fluid_ = std::make_unique<probes::HostFluidReader>(*solver_);
-        if (spec_.backend != "host")
+        if (spec_.backend != "host") {
             resident_ =
                 sph::make_resident_sph(spec_.backend, *solver_, spec_.exec_origin.at("backend"));
+            if (sph_fem_) resident_->couple_fem(*sph_fem_); // where the particles are
+        }
     }
     if (spec_.has_dem || spec_.has_bodies()) {
         scenario::build_dem_walls(spec_, dem_walls_);
@@ -234,7 +236,8 @@ RunReport Simulation::run(const RunOptions& opt) {
         });
     }
     // Eroded elements take their SPH boundary particles with them, between steps, and the
-    // surfaces they expose get boundary particles of their own.
+    // surfaces they expose get boundary particles of their own (where the particles are with a
+    // resident backend: the coupling removes and appends them there itself).
     if (sph_fem_)
         integ.add_hook(time::Hook::after_integration, [this](const time::StepInfo& s) {
             const std::string note =

@@ -67,7 +67,9 @@ void Simulation::log_case(const RunReport& report) {
                         spec_.sph.diffusion, sph::wall_words(spec_.sph),
                         resident_ ? "gathered over cells" : sph::pair_loop_words(spec_.sph),
                         report.initial_dt.dt, report.initial_dt.limiter));
-    if (solver_) log_.line("backend: " + sph::backend_words(spec_.backend, spec_.has_bodies()));
+    if (solver_)
+        log_.line("backend: " +
+                  sph::backend_words(spec_.backend, spec_.has_bodies(), spec_.has_fem()));
     if (dem_ && (!solver_ || spec_.backend != "host")) // each resident phase says where it runs
         log_.line("backend: " + dem::backend_words(spec_.backend));
     if (resident_sph_dem_)

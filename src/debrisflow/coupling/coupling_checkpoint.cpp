@@ -15,8 +15,19 @@ void SphFemCoupling::state(checkpoint::Archive& ar) {
     for (auto* rows : {&rows_, &hidden_})
         ar.columns(*rows, &Row::solid, &Row::element, &Row::n, &Row::facet, &Row::X);
     ar(surface_stale_, facets_, row_of_id_, eroded_seen_, last_force_);
-    // The particles' indices follow from their ids at the next use.
-    if (ar.is_loading()) layout_seen_ = ~std::uint64_t(0);
+    // The particles' indices follow from their ids at the next use; the carriers from the rows.
+    if (ar.is_loading()) {
+        layout_seen_ = ~std::uint64_t(0);
+        carriers_.clear();
+        for (const auto* rows : {&rows_, &hidden_})
+            for (const Row& r : *rows)
+                if (r.solid < 0 || std::size_t(r.solid) >= fem_.solids().size() || r.element < 0 ||
+                    std::size_t(r.element) >= fem_.solids()[std::size_t(r.solid)].volume.size() ||
+                    r.facet < -1 || r.facet >= std::int32_t(facets_.size()))
+                    ar.fail("a boundary particle row outside the solids' elements or facets");
+        for (const Row& r : rows_) carriers_.push_back(carrier_of(r));
+        if (resident_) resident_->carriers_changed();
+    }
 }
 
 void DemFemCoupling::state(checkpoint::Archive& ar) {

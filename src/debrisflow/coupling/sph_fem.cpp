@@ -144,21 +144,52 @@ std::int32_t SphFemCoupling::nearest_facet(Vec3 X, Real& depth) const {
     return nearest;
 }
 
-void SphFemCoupling::add_particle(const Row& r, Real depth) {
+FemCarrier SphFemCoupling::carrier_of(const Row& r) const {
     const auto& so = fem_.solids()[std::size_t(r.solid)];
     const int nn = fem::nodes_of(so.type);
-    const std::int32_t* c = &so.conn[std::size_t(r.element) * std::size_t(nn)];
-    Vec3 p{}, u{};
+    FemCarrier c{};
+    c.nodes = nn;
+    c.facet = r.facet;
     for (int a = 0; a < nn; ++a) {
-        p = p + r.n[std::size_t(a)] * fem_.positions()[std::size_t(c[a])];
-        u = u + r.n[std::size_t(a)] * fem_.velocities()[std::size_t(c[a])];
+        c.node[a] = so.conn[std::size_t(r.element) * std::size_t(nn) + std::size_t(a)];
+        c.n[a] = r.n[std::size_t(a)];
+    }
+    return c;
+}
+
+particles::NewParticle SphFemCoupling::new_particle(const Row& r, Real depth,
+                                                    rigid::ShellPoint& wall) const {
+    const FemCarrier c = carrier_of(r);
+    Vec3 p{}, u{};
+    for (int a = 0; a < c.nodes; ++a) {
+        p = p + c.n[a] * fem_.positions()[std::size_t(c.node[a])];
+        u = u + c.n[a] * fem_.velocities()[std::size_t(c.node[a])];
     }
     if (dim_ == 2) p.y = 0, u.y = 0;
-    set_.add(p, u, rho_, mass_, particles::Kind::boundary, std::int16_t(-1));
-    set_.set_wall(set_.size() - 1,
-                  fem::facet_normal(facets_[std::size_t(r.facet)], fem_.positions()), depth);
+    wall = {p, fem::facet_normal(facets_[std::size_t(r.facet)], fem_.positions()), depth};
+    return {p, u, rho_, mass_, particles::Kind::boundary, std::int16_t(-1)};
+}
+
+void SphFemCoupling::add_particle(const Row& r, Real depth) {
+    rigid::ShellPoint wall;
+    const auto q = new_particle(r, depth, wall);
+    set_.add(q.pos, q.vel, q.rho, q.mass, q.kind, q.group);
+    set_.set_wall(set_.size() - 1, wall.n, wall.depth);
     row_of_id_.emplace(set_.id.back(), std::uint32_t(rows_.size()));
     rows_.push_back(r);
+    carriers_.push_back(carrier_of(r));
+}
+
+void SphFemCoupling::attach(FemParticles* particles) {
+    resident_ = particles;
+    resident_->carriers_changed();
+}
+
+std::vector<Vec3> SphFemCoupling::facet_normals() const {
+    std::vector<Vec3> n(facets_.size());
+    for (std::size_t f = 0; f < facets_.size(); ++f)
+        n[f] = fem::facet_normal(facets_[f], fem_.positions());
+    return n;
 }
 
 void SphFemCoupling::refresh_members() {
@@ -175,33 +206,19 @@ void SphFemCoupling::refresh_members() {
 }
 
 void SphFemCoupling::move_particles(Real ahead) {
-    refresh_members();
+    const auto normals = facet_normals();
     const auto& x = fem_.positions();
     const auto& v = fem_.velocities();
-    const auto& solids = fem_.solids();
-    auto pv = set_.view();
+    if (resident_) return resident_->move(x, v, normals, ahead);
+    refresh_members();
+    const auto pv = set_.view();
     const Index* mem = members_.data();
     const std::uint32_t* rows = member_rows_.data();
-    const Row* rw = rows_.data();
-    const fem::SurfaceFacet* facets = facets_.data();
-    const int dim = dim_;
-    exec::for_each(Index(members_.size()), [&, pv, mem, rows, rw, facets, dim](Index k) {
-        const Row& r = rw[rows[k]];
-        const auto& so = solids[std::size_t(r.solid)];
-        const int nn = fem::nodes_of(so.type);
-        const std::int32_t* c = &so.conn[std::size_t(r.element) * std::size_t(nn)];
-        Vec3 p{}, u{};
-        for (int a = 0; a < nn; ++a) {
-            const Vec3 xa = x[std::size_t(c[a])], va = v[std::size_t(c[a])];
-            p = p + r.n[std::size_t(a)] * (xa + ahead * va);
-            u = u + r.n[std::size_t(a)] * va;
-        }
-        if (dim == 2) p.y = 0, u.y = 0;
-        const Index i = mem[k];
-        pv.x[i] = p.x, pv.y[i] = p.y, pv.z[i] = p.z;
-        pv.vx[i] = u.x, pv.vy[i] = u.y, pv.vz[i] = u.z;
-        const Vec3 n = fem::facet_normal(facets[r.facet], x);
-        pv.wnx[i] = n.x, pv.wny[i] = n.y, pv.wnz[i] = n.z;
+    const FemCarrier* carriers = carriers_.data();
+    const Vec3 *xp = x.data(), *vp = v.data(), *np = normals.data();
+    const bool two_d = dim_ == 2;
+    exec::for_each(Index(members_.size()), [=](Index k) {
+        place_on_element(pv, mem[k], carriers[rows[k]], xp, vp, np, ahead, two_d);
     });
 }
 
@@ -225,51 +242,105 @@ std::vector<std::uint8_t> SphFemCoupling::eroded_keep_mask() {
     return keep;
 }
 
+std::vector<std::uint8_t> SphFemCoupling::newly_dead_rows() {
+    const long eroded = fem_.eroded_elements();
+    if (eroded == eroded_seen_) return {};
+    eroded_seen_ = eroded;
+    surface_stale_ = true;
+    std::vector<std::uint8_t> dead(rows_.size(), 0);
+    bool any = false;
+    for (auto it = row_of_id_.begin(); it != row_of_id_.end();) {
+        const Row& r = rows_[it->second];
+        if (fem_.solids()[std::size_t(r.solid)].eroded[std::size_t(r.element)]) {
+            dead[it->second] = 1;
+            any = true;
+            it = row_of_id_.erase(it);
+        } else {
+            ++it;
+        }
+    }
+    if (!any) return {};
+    return dead;
+}
+
 std::size_t SphFemCoupling::expose_new_surface() {
     if (!surface_stale_) return 0;
     surface_stale_ = false;
     facets_ = fem::boundary_facets(fem_);
-    refresh_members();
     // Survivors: the nearest facet (normal) and depth now refer to the new surface.
-    for (std::size_t k = 0; k < members_.size(); ++k) {
-        Row& r = rows_[member_rows_[k]];
-        Real depth;
-        r.facet = nearest_facet(r.X, depth);
-        set_.set_wall(members_[k],
-                      fem::facet_normal(facets_[std::size_t(r.facet)], fem_.positions()), depth);
+    if (resident_) {
+        std::vector<Real> depth(rows_.size(), Real(0));
+        for (const auto& [id, row] : row_of_id_) {
+            Row& r = rows_[row];
+            r.facet = nearest_facet(r.X, depth[row]);
+            carriers_[row].facet = r.facet;
+        }
+        resident_->carriers_changed();
+        resident_->resurface(facet_normals(), depth);
+    } else {
+        refresh_members();
+        for (std::size_t k = 0; k < members_.size(); ++k) {
+            Row& r = rows_[member_rows_[k]];
+            Real depth;
+            r.facet = nearest_facet(r.X, depth);
+            carriers_[member_rows_[k]].facet = r.facet;
+            set_.set_wall(members_[k],
+                          fem::facet_normal(facets_[std::size_t(r.facet)], fem_.positions()),
+                          depth);
+        }
     }
     // Hidden samples of live elements that the new surface brings within the layer.
-    std::size_t added = 0;
     std::vector<Row> still_hidden;
+    std::vector<particles::NewParticle> fresh;
+    std::vector<rigid::ShellPoint> walls;
+    std::vector<std::int32_t> fresh_rows;
     for (Row& r : hidden_) {
         if (fem_.solids()[std::size_t(r.solid)].eroded[std::size_t(r.element)]) continue;
         Real depth;
         r.facet = nearest_facet(r.X, depth);
-        if (depth < thickness_) {
-            add_particle(r, depth);
-            ++added;
-        } else {
+        if (depth >= thickness_) {
             still_hidden.push_back(r);
+        } else if (resident_) {
+            walls.emplace_back();
+            fresh.push_back(new_particle(r, depth, walls.back()));
+            fresh_rows.push_back(std::int32_t(rows_.size()));
+            rows_.push_back(r);
+            carriers_.push_back(carrier_of(r));
+        } else {
+            add_particle(r, depth);
+            fresh_rows.push_back(0);
         }
     }
     hidden_ = std::move(still_hidden);
+    const std::size_t added = fresh_rows.size();
+    if (resident_ && added > 0) {
+        resident_->carriers_changed();
+        const ParticleId first = resident_->append(fresh, walls, fresh_rows);
+        for (std::size_t j = 0; j < added; ++j)
+            row_of_id_.emplace(first + ParticleId(j), std::uint32_t(fresh_rows[j]));
+    }
     if (added > 0) layout_seen_ = ~std::uint64_t(0);
     return added;
 }
 
 void SphFemCoupling::collect_forces(std::vector<Vec3>& f) {
-    refresh_members();
+    std::vector<CarriedLoad> loads;
+    if (resident_) {
+        loads = resident_->loads();
+    } else {
+        refresh_members();
+        const auto pv = set_.view();
+        loads.reserve(members_.size());
+        for (std::size_t k = 0; k < members_.size(); ++k)
+            loads.push_back({std::int32_t(member_rows_[k]), carried_load(pv, members_[k])});
+    }
+    // F_a += N_a(xi) m_k a_k, in index order
     Vec3 total{};
-    for (std::size_t k = 0; k < members_.size(); ++k) {
-        const Index i = members_[k];
-        const Row& r = rows_[member_rows_[k]];
-        const Vec3 fk = set_.mass[i] * Vec3{set_.ax[i], set_.ay[i], set_.az[i]};
-        total = total + fk;
-        const auto& so = fem_.solids()[std::size_t(r.solid)];
-        const int nn = fem::nodes_of(so.type);
-        const std::int32_t* c = &so.conn[std::size_t(r.element) * std::size_t(nn)];
-        for (int a = 0; a < nn; ++a)
-            f[std::size_t(c[a])] = f[std::size_t(c[a])] + r.n[std::size_t(a)] * fk;
+    for (const CarriedLoad& l : loads) {
+        total = total + l.force;
+        const FemCarrier& c = carriers_[std::size_t(l.row)];
+        for (int a = 0; a < c.nodes; ++a)
+            f[std::size_t(c.node[a])] = f[std::size_t(c.node[a])] + c.n[a] * l.force;
     }
     last_force_ = total;
 }

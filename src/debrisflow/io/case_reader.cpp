@@ -203,22 +203,18 @@ namespace {
 // moved on the host), clumps of grains (one that leaves is removed on the host), settling (on the
 // host, before the loop), the domain exit, outlets and grain feeds, every grain probe, FEM solids
 // that grains touch (their surface triangles moved with the nodes, the contacts' impulse handed to
-// the nodes on the host; the FEM steps on the host). Fluid and grains together, with their
-// unresolved coupling (coupling/resident_sph_dem.hpp). A fluid with FEM solids (the SPH-FEM
-// coupling's boundary particles) is rejected here, so that `check` rejects it too.
+// the nodes on the host; the FEM steps on the host). FEM solids in a fluid: their carried
+// boundary particles moved, loaded, eroded and exposed where the particles are
+// (sph/resident_fem.hpp). Fluid and grains together, with their unresolved coupling
+// (coupling/resident_sph_dem.hpp). A case with neither fluid nor grains (FEM solids alone) has
+// nothing for them to run and is rejected here, so that `check` rejects it too.
 void require_backend_supports(const CaseSpec& c) {
     if (c.backend == "host") return;
-    const auto no = [&](bool present, const std::string& what) {
-        if (present)
-            throw InputError(fmt::format(
-                "{}: exec.backend = \"{}\" runs fluid (with walls, inlets, outlets and rigid "
-                "bodies) and grains (with walls, gates, feeds, outlets, rigid bodies, clumps, "
-                "FEM solids, the domain exit and the fluid's drag) so far, not a fluid with FEM "
-                "solids; this case has {} (use exec.backend = \"host\")",
-                c.exec_origin.at("backend"), c.backend, what));
-    };
-    no(c.fluids.empty() && !c.has_dem, "neither fluid nor grains");
-    no(!c.fluids.empty() && c.has_fem(), "a fluid with FEM solids");
+    if (c.fluids.empty() && !c.has_dem)
+        throw InputError(fmt::format(
+            "{}: exec.backend = \"{}\" runs the fluid and the grains where they are; this case "
+            "has neither fluid nor grains (use exec.backend = \"host\")",
+            c.exec_origin.at("backend"), c.backend));
 }
 
 } // namespace

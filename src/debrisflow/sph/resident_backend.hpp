@@ -16,7 +16,8 @@
 
 namespace debrisflow::coupling {
 class SphBodyCoupling;
-}
+class SphFemCoupling;
+} // namespace debrisflow::coupling
 namespace debrisflow::rigid {
 class BodySolver;
 }
@@ -61,6 +62,10 @@ public:
     // particles moved, added (rock feeds) and removed (outlets) where the particles are
     // (sph/resident_bodies.hpp); the host's coupling keeps the rows.
     virtual void couple_bodies(rigid::BodySolver& bodies, coupling::SphBodyCoupling& coupling) = 0;
+    // Holds the FEM solids' carried boundary particles (before the run): moved from the nodes,
+    // their loads compacted, eroded and exposed where the particles are (sph/resident_fem.hpp);
+    // the host's coupling keeps the rows and the FEM.
+    virtual void couple_fem(coupling::SphFemCoupling& coupling) = 0;
     // The probes' point samples and reductions, evaluated where the particles are.
     virtual const probes::FluidReader& fluid_reader() const = 0;
     // The host's ParticleSet was replaced (a checkpoint restored): take it over again now.
@@ -68,8 +73,8 @@ public:
 };
 
 // How `check` and the log name where each phase runs on `backend` (`bodies`: the case has
-// rigid bodies).
-std::string backend_words(const std::string& backend, bool bodies);
+// rigid bodies; `fem`: FEM solids in the fluid).
+std::string backend_words(const std::string& backend, bool bodies, bool fem);
 
 // The resident phase for `backend` ("host_resident" or "cuda") on the host solver's particles.
 // Throws InputError (naming `where`) when this build has no such backend.

@@ -18,6 +18,7 @@
 #include "debrisflow/sph/mdbc_k.hpp"
 #include "debrisflow/sph/resident_backend.hpp"
 #include "debrisflow/sph/resident_bodies.hpp"
+#include "debrisflow/sph/resident_fem.hpp"
 #include "debrisflow/sph/resident_fluid_reader.hpp"
 #include "debrisflow/sph/resident_steps_k.hpp"
 #include "debrisflow/sph/sph_solver.hpp"
@@ -39,6 +40,7 @@ namespace debrisflow::sph {
 template <class Space> class ResidentSph final : public ResidentPhase {
     template <class T> using Buffer = typename Space::template Buffer<T>;
     friend class ResidentBodies<Space>;
+    friend class ResidentFem<Space>;
     friend class ResidentFluidReader<Space>;
     friend class coupling::ResidentSphDem<Space>;
 
@@ -205,6 +207,7 @@ public:
         for (const auto& a : old_) b += a.bytes();
         for (const auto& a : start_) b += a.bytes();
         if (bodies_) b += row_.bytes() + bodies_->bytes();
+        if (fem_) b += fem_row_.bytes() + fem_->bytes();
         b += reader_.bytes();
         return b;
     }
@@ -253,11 +256,13 @@ public:
         append_particles(fresh, {}, {});
     }
 
-    // As append, with each new particle's wall normal and depth (a body's shell) and body
-    // row when given; returns the first new particle's id (the others follow it).
+    // As append, with each new particle's wall normal and depth (a body's shell, a solid's
+    // exposed surface), body row and FEM row when given; returns the first new particle's id
+    // (the others follow it).
     ParticleId append_particles(const std::vector<particles::NewParticle>& fresh,
                                 const std::vector<rigid::ShellPoint>& walls,
-                                const std::vector<std::int32_t>& rows) {
+                                const std::vector<std::int32_t>& rows,
+                                const std::vector<std::int32_t>& fem_rows = {}) {
         upload_once();
         const Index k = Index(fresh.size());
         if (k == 0) return set_.claim_ids(0);
@@ -292,6 +297,10 @@ public:
         append_tail(id_, id, 1);
         if (bodies_)
             append_tail(row_, rows.empty() ? std::vector<std::int32_t>(fresh.size(), -1) : rows, 1);
+        if (fem_)
+            append_tail(fem_row_,
+                        fem_rows.empty() ? std::vector<std::int32_t>(fresh.size(), -1) : fem_rows,
+                        1);
         ++layout_;
         n_ += k;
         return first;
@@ -301,6 +310,13 @@ public:
         if (resident_) throw std::logic_error("resident SPH: bodies are coupled before the run");
         bodies_ = std::make_unique<ResidentBodies<Space>>(*this, coupling);
         bodies.attach_fluid(bodies_.get());
+    }
+
+    void couple_fem(coupling::SphFemCoupling& coupling) override {
+        if (resident_)
+            throw std::logic_error("resident SPH: FEM solids are coupled before the run");
+        fem_ = std::make_unique<ResidentFem<Space>>(*this, coupling);
+        coupling.attach(fem_.get());
     }
 
     const probes::FluidReader& fluid_reader() const override {
@@ -325,7 +341,8 @@ private:
                 &s.rho, &s.drho, &s.p, &s.mass, &s.wnx, &s.wny, &s.wnz, &s.wd, &s.mu};
     }
     // The wall geometry (normal and depth, arrays 13 .. 16) is held only where a functor of
-    // this case reads or writes it: mDBC, a no-slip wall's viscous terms, the bodies' motion.
+    // this case reads or writes it: mDBC, a no-slip wall's viscous terms, the bodies' or the
+    // FEM solids' motion.
     // Otherwise it stays on the host (fixed walls keep it; fluid has none), reordered by id
     // when the particles are published: 32 B per particle less.
     bool needs_wall_geometry() const {
@@ -336,7 +353,7 @@ private:
                 return V::no_slip_walls || V::needs_apparent_viscosity;
             },
             host_.models().viscosity);
-        return p.boundary == "mdbc" || viscous_walls || bodies_ != nullptr;
+        return p.boundary == "mdbc" || viscous_walls || bodies_ != nullptr || fem_ != nullptr;
     }
     bool held(std::size_t field) const { return geometry_ || field < 13 || field > 16; }
 
@@ -392,6 +409,10 @@ private:
         upload(group_, set_.group);
         upload(id_, set_.id);
         if (bodies_) upload(row_, bodies_->rows_of(set_.id));
+        if (fem_) {
+            fem_->carriers_changed();
+            upload(fem_row_, fem_->rows_of(set_.id));
+        }
         ++layout_;
         keys_.resize(n_);
         order_.resize(n_);
@@ -456,6 +477,7 @@ private:
         gather_through(group_);
         gather_through(id_);
         if (bodies_) gather_through(row_);
+        if (fem_) gather_through(fem_row_);
         ++layout_;
     }
     // The same for an array of a narrower type, through the Real scratch as a carrier of its
@@ -533,6 +555,7 @@ private:
         scatter_through(group_, m);
         scatter_through(id_, m);
         if (bodies_) scatter_through(row_, m);
+        if (fem_) scatter_through(fem_row_, m);
         ++layout_;
         n_ = m;
         Space::synchronize();
@@ -598,6 +621,9 @@ private:
     // Rigid bodies: each particle's body-particle row (or -1), and the bodies' fluid side.
     Buffer<std::int32_t> row_;
     std::unique_ptr<ResidentBodies<Space>> bodies_;
+    // FEM solids: each particle's carried row (or -1), and the solids' fluid side.
+    Buffer<std::int32_t> fem_row_;
+    std::unique_ptr<ResidentFem<Space>> fem_;
     std::uint64_t layout_ = 0; // changes when particles are reordered, removed or added
     ResidentFluidReader<Space> reader_{*this}; // the probes' point samples and reductions
     mutable typename Space::Sorter sorter_;

@@ -18,7 +18,7 @@ void set_cuda_factory(ResidentFactory f) {
     cuda_factory = f;
 }
 
-std::string backend_words(const std::string& backend, bool bodies) {
+std::string backend_words(const std::string& backend, bool bodies, bool fem) {
     if (backend == "host") return "host, every phase on the host's threads (OpenMP)";
     return backend + ", the SPH phase resident " +
            (backend == "cuda" ? "on the CUDA device"
@@ -27,6 +27,9 @@ std::string backend_words(const std::string& backend, bool bodies) {
            (bodies ? "; rigid bodies: fluid loads reduced and body particles moved there, the "
                      "6-DOF update on the host"
                    : "") +
+           (fem ? "; FEM solids: their boundary particles moved from the nodes and their loads "
+                  "compacted there, the FEM stepped on the host"
+                : "") +
            "; particles are copied to the host only for frames, checkpoints and the end";
 }
 
