@@ -261,6 +261,33 @@ TEST(ResidentBackend, GrainsInWater) {
     EXPECT_EQ(grain_copies, 1);
 }
 
+// The retaining dam (SPH-DEM-FEM, section D of seed_experiments.md) with every coupling on the
+// resident loops: slurry and rocks (their drag coupling where both are), the slurry on the dam's
+// carried boundary particles, the rocks on its surface triangles. Reduced to 0.12 s: the dam
+// moved up to the debris (its toe at x = 8 m), 720 rocks next to it, the debris released at
+// 3 m/s towards it. Both the slurry's and the rocks' loads on the dam must be non-zero by the
+// end, or the test proves nothing; the dam's load by source, its crest's displacement and its
+// face's load by height are among the probes compared.
+TEST(ResidentBackend, RetainingDamSphDemFem) {
+    long copies = -1, grain_copies = -1;
+    State host;
+    check("cases/papers/retaining_dam.toml",
+          {"output.vtk=false", "solid.0.origin=[8.0,0.0,0.0]", "grains.0.region.min=[5.5,0.25,0.2]",
+           "grains.0.region.max=[7.96,5.75,1.75]", "grains.0.velocity=[3,0,0]",
+           "fluid.0.velocity=[3,0,0]", "probe.3.min=[7.0,0.0,-0.1]", "probe.3.max=[8.0,6.0,6.0]",
+           "dem.contact_pass=\"slots\""},
+          0.12, 0.25, 1000, &copies, &grain_copies, &host);
+    EXPECT_EQ(copies, 1);
+    EXPECT_EQ(grain_copies, 1);
+    // probe 1, dam_load: time, then fluid (Fx, Fy, Fz, |F|), grains (Fx, Fy, Fz, |F|), ...
+    ASSERT_GE(host.probes.size(), 2u);
+    ASSERT_FALSE(host.probes[1].empty());
+    const auto& last = host.probes[1].back();
+    ASSERT_GE(last.size(), 9u);
+    EXPECT_GT(last[4], 1e4); // N: the slurry's load
+    EXPECT_GT(last[8], 1e4); // N: the rocks' load
+}
+
 // mDBC walls: the ghost-node densities where the particles are, before the pressures.
 TEST(ResidentBackend, DamBreakMdbc) {
     check("cases/dambreak2d.toml", {"sph.boundary=\"mdbc\"", "dp=0.015", "output.vtk=false"}, 0.3,
