@@ -26,7 +26,7 @@ void SphFemCoupling::state(checkpoint::Archive& ar) {
                     r.facet < -1 || r.facet >= std::int32_t(facets_.size()))
                     ar.fail("a boundary particle row outside the solids' elements or facets");
         for (const Row& r : rows_) carriers_.push_back(carrier_of(r));
-        if (resident_) resident_->carriers_changed();
+        // (a resident backend takes them again when it takes the restored particles over)
     }
 }
 

@@ -181,8 +181,7 @@ void SphFemCoupling::add_particle(const Row& r, Real depth) {
 }
 
 void SphFemCoupling::attach(FemParticles* particles) {
-    resident_ = particles;
-    resident_->carriers_changed();
+    resident_ = particles; // which takes the carriers when it takes the particles over
 }
 
 std::vector<Vec3> SphFemCoupling::facet_normals() const {
@@ -294,6 +293,7 @@ std::size_t SphFemCoupling::expose_new_surface() {
     std::vector<particles::NewParticle> fresh;
     std::vector<rigid::ShellPoint> walls;
     std::vector<std::int32_t> fresh_rows;
+    std::size_t added = 0;
     for (Row& r : hidden_) {
         if (fem_.solids()[std::size_t(r.solid)].eroded[std::size_t(r.element)]) continue;
         Real depth;
@@ -306,17 +306,17 @@ std::size_t SphFemCoupling::expose_new_surface() {
             fresh_rows.push_back(std::int32_t(rows_.size()));
             rows_.push_back(r);
             carriers_.push_back(carrier_of(r));
+            ++added;
         } else {
             add_particle(r, depth);
-            fresh_rows.push_back(0);
+            ++added;
         }
     }
     hidden_ = std::move(still_hidden);
-    const std::size_t added = fresh_rows.size();
-    if (resident_ && added > 0) {
+    if (resident_ && !fresh.empty()) {
         resident_->carriers_changed();
         const ParticleId first = resident_->append(fresh, walls, fresh_rows);
-        for (std::size_t j = 0; j < added; ++j)
+        for (std::size_t j = 0; j < fresh_rows.size(); ++j)
             row_of_id_.emplace(first + ParticleId(j), std::uint32_t(fresh_rows[j]));
     }
     if (added > 0) layout_seen_ = ~std::uint64_t(0);
