@@ -7,12 +7,11 @@ resolution dp, the wall treatment and the sampling window (issue #29).
 
 Runs the demo case (cases/dambreak2d.toml) to t = 0.6 s with sensor 1 sampled at 20 kHz (as
 the experiment) for each combination, and prints a Markdown table of p/(rho g H): the peak of
-the samples and the peaks of its 1 ms and 5 ms moving means (summary.json), beside the same
-three numbers of the experiment's event (Fig18_peak_event_5_sensors_5.dat: sensor 1).
+the samples and the peaks of its 1, 5, 20 and 50 ms moving means (from probes/sensor1.csv),
+beside the same numbers of the experiment's event (Fig18_peak_event_5_sensors_5.dat: sensor 1).
 """
 import argparse
 import itertools
-import json
 import math
 import os
 import subprocess
@@ -21,6 +20,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 REF = os.path.join(ROOT, "..", "shared", "reference", "dambreak_2d_lobovsky2014")
 RHO_G_H = 1000 * 9.81 * 0.3
 T_SCALE = math.sqrt(0.3 / 9.81)
+WINDOWS = [0.001, 0.005, 0.02, 0.05]  # moving-mean windows [s]
 
 
 def window_peaks(t, p, windows):
@@ -51,7 +51,19 @@ def experiment():
         a, b = map(float, line.split())
         t.append(a * T_SCALE)
         p.append(b)
-    return window_peaks(t, p, [0.001, 0.005])
+    return window_peaks(t, p, WINDOWS)
+
+
+def simulated(out):
+    """The run's sensor 1 as p/(rho g H) against t, read from its probe file."""
+    t, p = [], []
+    with open(os.path.join(out, "probes", "sensor1.csv")) as f:
+        next(f)
+        for line in f:
+            cols = line.split(",")
+            t.append(float(cols[0]))
+            p.append(float(cols[1]) / RHO_G_H)
+    return t, p
 
 
 def main():
@@ -76,15 +88,17 @@ def main():
                         "--set", f"sph.c0_coefficient={c0}", "--set", f'sph.boundary="{wall}"',
                         "--set", "probe.0.every=0.00005", "--set", "output.vtk=false"] + extra,
                        check=True, stdout=subprocess.DEVNULL)
-        s = json.load(open(os.path.join(out, "summary.json")))["probes"]["sensor1"]["p [Pa]"]
-        rows.append((dp, c0, wall, s["peak"] / RHO_G_H, s["peak_mean_1ms"] / RHO_G_H,
-                     s["peak_mean_5ms"] / RHO_G_H, s["peak_time"] / T_SCALE))
-    e = experiment()
-    print("| dp (mm) | c0 / sqrt(g H) | wall | peak | 1 ms mean | 5 ms mean | T of peak |")
-    print("|---|---|---|---|---|---|---|")
-    for dp, c0, wall, pk, m1, m5, tp in rows:
-        print(f"| {dp * 1000:g} | {c0} | {wall} | {pk:.2f} | {m1:.2f} | {m5:.2f} | {tp:.2f} |")
-    print(f"| experiment (event 5) | | | {e[0]:.2f} | {e[1]:.2f} | {e[2]:.2f} | 2.45 |")
+        t, p = simulated(out)
+        t_peak = t[max(range(len(p)), key=p.__getitem__)] / T_SCALE
+        rows.append((dp, c0, wall, window_peaks(t, p, WINDOWS), t_peak))
+    header = " | ".join(f"{w * 1000:g} ms mean" for w in WINDOWS)
+    print(f"| dp (mm) | c0 / sqrt(g H) | wall | peak | {header} | T of peak |")
+    print("|---|---|---|---|" + "---|" * len(WINDOWS) + "---|")
+    for dp, c0, wall, peaks, tp in rows:
+        cells = " | ".join(f"{v:.2f}" for v in peaks)
+        print(f"| {dp * 1000:g} | {c0} | {wall} | {cells} | {tp:.2f} |")
+    cells = " | ".join(f"{v:.2f}" for v in experiment())
+    print(f"| experiment (Fig. 18 event) | | | {cells} | 2.45 |")
 
 
 if __name__ == "__main__":

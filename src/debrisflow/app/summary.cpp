@@ -137,10 +137,10 @@ void write_summary(const std::string& path, const io::CaseSpec& spec, const RunR
               << fmt::format(": {{\"peak\": {}, \"peak_time\": {}, \"final\": {}",
                              any ? num(p.peaks()[c]) : "null", any ? num(p.peak_time(c)) : "null",
                              any ? num(p.finals()[c]) : "null");
-            // the peak as sensors that average over 1, 5 and 20 ms would read it
+            // the peak as sensors that average over 1, 5, 20 and 50 ms would read it
             for (const auto& [key, w] :
                  {std::pair{"peak_mean_1ms", 0.001}, std::pair{"peak_mean_5ms", 0.005},
-                  std::pair{"peak_mean_20ms", 0.02}}) {
+                  std::pair{"peak_mean_20ms", 0.02}, std::pair{"peak_mean_50ms", 0.05}}) {
                 o << ", \"" << key << "\": " << num(any ? p.peak_window_mean(c, Real(w)) : NAN);
             }
             o << "}";
