@@ -56,6 +56,12 @@ void write_summary(const std::string& path, const io::CaseSpec& spec, const RunR
     o << "  \"threads\": " << r.threads << ",\n";
     o << "  \"pair_list_builds\": " << r.pair_list_builds << ",\n";
     o << "  \"pair_list_entries\": " << r.pairs << ",\n";
+    // What an impact pressure peak scales with: the water hammer rho0 c0 u of the artificial
+    // sound speed (docs/validation.md, "The impact peak is acoustic").
+    if (spec.sph.c0 > 0)
+        o << fmt::format("  \"sph\": {{\"c0\": {}, \"rho0\": {}, \"h\": {}, \"boundary\": {}}},\n",
+                         num(spec.sph.c0), num(spec.sph.rho0), num(spec.sph.h),
+                         quoted(spec.sph.boundary));
     if (r.sph_bytes > 0) {
         o << fmt::format(
             "  \"sph_memory\": {{\"backend\": {}, \"pair_loop\": {}, \"bytes\": {}, "
