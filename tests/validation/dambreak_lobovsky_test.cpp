@@ -63,11 +63,13 @@ test::Curve experiment(const char* file) {
     return test::read_curve(test::reference(std::string("dambreak_2d_lobovsky2014/") + file));
 }
 
-// The experiment's event (Lobovsky et al. 2014, Fig. 18, sensor 1) as p/(rho g H) against t [s].
-void experiment_event(std::vector<Real>& t, std::vector<Real>& p) {
+// An experiment's event (Lobovsky et al. 2014, Fig. 18; sensor 1 by default: the files are
+// numbered from the top sensor down, _5 sensor 1, _4 sensor 2, _2 sensor 3, _1 sensor 4) as
+// p/(rho g H) against t [s].
+void experiment_event(std::vector<Real>& t, std::vector<Real>& p,
+                      const char* file = "Fig18_peak_event_5_sensors_5.dat") {
     const double t_scale = std::sqrt(H / g);
-    for (const auto& [T, P] : experiment("Fig18_peak_event_5_sensors_5.dat"))
-        t.push_back(T * t_scale), p.push_back(P);
+    for (const auto& [T, P] : experiment(file)) t.push_back(T * t_scale), p.push_back(P);
 }
 
 } // namespace
@@ -144,6 +146,28 @@ TEST(DamBreakLobovsky, Sensor1LoadOver50msFollowsTheFlowNotC0) {
                                  100 * (mean50 - event) / event);
         // Source: Lobovsky et al. 2014, Fig. 18 event; tolerance 25 % (stated above).
         EXPECT_NEAR(mean50, event, 0.25 * event) << "dp = " << dp << ", c0 = " << c0;
+    }
+}
+
+// Known gap (docs/validation.md, "Up the wall it does not hold"): the impact load over 50 ms
+// 30 and 80 mm up the wall (sensors 3 and 4, sampled at 2 kHz) against the Fig. 18 events
+// (1.49 and 0.72), tolerance +-25 % as sensor 1's. Measured at dp = 6 mm, c0 = 10 sqrt(g H),
+// DBC: 0.69 (-54 %) and 0.19 (-74 %): the run-up sheet rises off the wall.
+TEST(DamBreakLobovskyKnownGap, UpperSensorsLoadOver50ms) {
+    app::Simulation sim(io::read_case(std::string(DEBRISFLOW_SOURCE_DIR) + "/cases/dambreak2d.toml",
+                                      {"dp=0.006", "time.end=0.6", "probe.2.every=0.0005",
+                                       "probe.3.every=0.0005", "output.vtk=false"}));
+    sim.run({"", true, 0});
+    for (const auto& [name, file] : {std::pair{"sensor3", "Fig18_peak_event_5_sensors_2.dat"},
+                                     std::pair{"sensor4", "Fig18_peak_event_5_sensors_1.dat"}}) {
+        std::vector<Real> t, p;
+        experiment_event(t, p, file);
+        const double event = probes::peak_moving_mean(t, p, 0.05);
+        const double mean50 = sim.probe(name).peak_window_mean(0, 0.05) / (rho0 * g * H);
+        std::cout << fmt::format("Lobovsky {}: 50 ms mean {:.2f} (event {:.2f}, {:+.1f} %)\n", name,
+                                 mean50, event, 100 * (mean50 - event) / event);
+        // Source: Lobovsky et al. 2014, Fig. 18 events; tolerance 25 % (as sensor 1's).
+        EXPECT_NEAR(mean50, event, 0.25 * event) << name;
     }
 }
 
