@@ -6,8 +6,9 @@
 //  - sensor 1's impact load over 50 ms (the peak of its 50 ms moving mean) within 25 % of the
 //    experiment's event at two sound speeds and two resolutions;
 //  - known gaps: sensors 3 and 4 (y = 80 mm) arrive early (arrival: first p/(rho g H) at half
-//    the experiment's plateau, +-0.05 in T), sensor 4's plateau is low, and sensor 1's
-//    instantaneous peak is the water hammer rho c0 u.
+//    the experiment's plateau, +-0.05 in T), sensor 4's plateau is low, sensors 3 and 4's
+//    impact load over 50 ms is low, and sensor 1's instantaneous peak is the water hammer
+//    rho c0 u.
 // References: dambreak_2d_lobovsky2014/pysph_lobovsky_p{1_y3mm,3_y30mm,4_y80mm}.csv (the
 // experiment's curves as digitised by PySPH; sensor 4's ends at T = 5.04, so its plateau is
 // the mean over 3 <= T <= 5.04).
