@@ -7,11 +7,12 @@ resolution dp, the wall treatment and the sampling window (issue #29).
 
 Runs the demo case (cases/dambreak2d.toml) to t = 0.6 s with sensor 1 sampled at 20 kHz (as
 the experiment) for each combination, and prints a Markdown table of p/(rho g H): the peak of
-the samples and the peaks of its 1, 5, 20 and 50 ms moving means (from probes/sensor1.csv),
-beside the same numbers of the experiment's event (Fig18_peak_event_5_sensors_5.dat: sensor 1).
+the samples and the peaks of its 1, 5, 20 and 50 ms moving means (summary.json), beside the same
+numbers of the experiment's event (Fig18_peak_event_5_sensors_5.dat: sensor 1).
 """
 import argparse
 import itertools
+import json
 import math
 import os
 import subprocess
@@ -20,7 +21,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 REF = os.path.join(ROOT, "..", "shared", "reference", "dambreak_2d_lobovsky2014")
 RHO_G_H = 1000 * 9.81 * 0.3
 T_SCALE = math.sqrt(0.3 / 9.81)
-WINDOWS = [0.001, 0.005, 0.02, 0.05]  # moving-mean windows [s]
+WINDOWS = [0.001, 0.005, 0.02, 0.05]  # moving-mean windows [s], as summary.json's peak_mean_*
 
 
 def window_peaks(t, p, windows):
@@ -51,19 +52,7 @@ def experiment():
         a, b = map(float, line.split())
         t.append(a * T_SCALE)
         p.append(b)
-    return window_peaks(t, p, WINDOWS)
-
-
-def simulated(out):
-    """The run's sensor 1 as p/(rho g H) against t, read from its probe file."""
-    t, p = [], []
-    with open(os.path.join(out, "probes", "sensor1.csv")) as f:
-        next(f)
-        for line in f:
-            cols = line.split(",")
-            t.append(float(cols[0]))
-            p.append(float(cols[1]) / RHO_G_H)
-    return t, p
+    return window_peaks(t, p, WINDOWS), t[max(range(len(p)), key=p.__getitem__)] / T_SCALE
 
 
 def main():
@@ -88,17 +77,18 @@ def main():
                         "--set", f"sph.c0_coefficient={c0}", "--set", f'sph.boundary="{wall}"',
                         "--set", "probe.0.every=0.00005", "--set", "output.vtk=false"] + extra,
                        check=True, stdout=subprocess.DEVNULL)
-        t, p = simulated(out)
-        t_peak = t[max(range(len(p)), key=p.__getitem__)] / T_SCALE
-        rows.append((dp, c0, wall, window_peaks(t, p, WINDOWS), t_peak))
+        s = json.load(open(os.path.join(out, "summary.json")))["probes"]["sensor1"]["p [Pa]"]
+        keys = ["peak"] + [f"peak_mean_{w * 1000:g}ms" for w in WINDOWS]
+        rows.append((dp, c0, wall, [s[k] / RHO_G_H for k in keys], s["peak_time"] / T_SCALE))
     header = " | ".join(f"{w * 1000:g} ms mean" for w in WINDOWS)
     print(f"| dp (mm) | c0 / sqrt(g H) | wall | peak | {header} | T of peak |")
     print("|---|---|---|---|" + "---|" * len(WINDOWS) + "---|")
     for dp, c0, wall, peaks, tp in rows:
         cells = " | ".join(f"{v:.2f}" for v in peaks)
         print(f"| {dp * 1000:g} | {c0} | {wall} | {cells} | {tp:.2f} |")
-    cells = " | ".join(f"{v:.2f}" for v in experiment())
-    print(f"| experiment (Fig. 18 event) | | | {cells} | 2.45 |")
+    peaks, t_peak = experiment()
+    cells = " | ".join(f"{v:.2f}" for v in peaks)
+    print(f"| experiment (Fig. 18 event) | | | {cells} | {t_peak:.2f} |")
 
 
 if __name__ == "__main__":
