@@ -258,12 +258,15 @@ ParticleId build_particles(const io::CaseSpec& c, particles::ParticleSet& set,
                               fmt::format("its {} layers of dp = {} m", w.layers, c.dp));
         if (norm(w.velocity) > 0) {
             // A moving wall's particles must stay in the domain (or wrap through a periodic
-            // side) until the end: where they are at time.end.
+            // side) while the wall exists: where they are at time.end, or when it is removed.
+            const bool removed_first = w.remove_at && *w.remove_at < c.t_end;
+            const Real last = removed_first ? *w.remove_at : c.t_end;
             std::vector<Vec3> moved = pts;
-            for (Vec3& p : moved) p += c.t_end * w.velocity;
+            for (Vec3& p : moved) p += last * w.velocity;
             require_inside_domain(
                 moved, c, w.origin.at("velocity"),
-                fmt::format("where the wall's particles are at time.end = {} s", c.t_end),
+                fmt::format("where the wall's particles are at {} = {} s",
+                            removed_first ? "remove_at" : "time.end", last),
                 "slow the wall (or make the direction it moves in periodic)");
         }
         boundary.insert(boundary.end(), pts.begin(), pts.end());
