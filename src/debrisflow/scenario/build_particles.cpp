@@ -263,11 +263,10 @@ ParticleId build_particles(const io::CaseSpec& c, particles::ParticleSet& set,
             const Real last = removed_first ? *w.remove_at : c.t_end;
             std::vector<Vec3> moved = pts;
             for (Vec3& p : moved) p += last * w.velocity;
-            require_inside_domain(
-                moved, c, w.origin.at("velocity"),
-                fmt::format("where the wall's particles are at {} = {} s",
-                            removed_first ? "remove_at" : "time.end", last),
-                "slow the wall (or make the direction it moves in periodic)");
+            require_inside_domain(moved, c, w.origin.at("velocity"),
+                                  fmt::format("where the wall's particles are at {} = {} s",
+                                              removed_first ? "remove_at" : "time.end", last),
+                                  "slow the wall (or make the direction it moves in periodic)");
         }
         boundary.insert(boundary.end(), pts.begin(), pts.end());
     }
