@@ -8,11 +8,11 @@
 //
 // The deposit depends on the column's width in grains, L0/d (a size effect measured in
 // experiments, Warnett et al. 2014, and in DEM, Man, Huppert & Galindo-Torres 2021): at a ~ 2
-// the run-out rises from -28 % of the rods' fit at L0/d = 20 to -17 % at 30, -8 to -17 % at
-// 40 and -2 to +1 % at 60, while the final height falls from -7 % to -11 to -16 % (30-40) and
-// -19 to -22 % (60) (docs/validation.md, "Deposit shape"; one packing per value above 20).
+// the run-out rises from -28 % of the rods' fit at L0/d = 20 to -15 to -16 % at 30, -6 to -15 %
+// at 40 and -1 to +2 % at 60, while the final height stays 15-25 % below the rods' fit at every
+// width (docs/validation.md, "Deposit shape"; one packing per value above 20).
 // The run-out is checked at L0/d = 60, where it agrees; the final height is a known gap at
-// 20 and at 60 discs wide (-15 and -20 %: round discs leave a flatter deposit than the rods).
+// 20 and at 60 discs wide (-15.5 and -22 %: round discs leave a flatter deposit than the rods).
 // Below a = 0.65 the rods' columns keep their height: so do discs with rolling resistance and
 // two-disc clumps; round discs without it do not (a known gap).
 //
@@ -126,12 +126,10 @@ LowColumn low_column(const char* file, const std::vector<std::string>& model) {
     // room to insert the grains at random before settling (clumps by their bounding circles)
     const Real box = clumps ? 0.526 : 0.274;
     std::vector<std::string> sets = model;
-    for (std::string s :
-         {fmt::format("wall.2.point=[{},0,0]", gate), std::string("grains.0.count=800"),
-          fmt::format("grains.0.region.max=[{},0,{}]", gate, box),
-          fmt::format("domain.max=[1.65,0,{}]", box + 0.05), std::string("time.end=1.0"),
-          std::string("output.vtk=false")})
-        sets.push_back(s);
+    sets.insert(sets.end(), {fmt::format("wall.2.point=[{},0,0]", gate), "grains.0.count=800",
+                             fmt::format("grains.0.region.max=[{},0,{}]", gate, box),
+                             fmt::format("domain.max=[1.65,0,{}]", box + 0.05), "time.end=1.0",
+                             "output.vtk=false"});
     app::Simulation sim(
         io::read_case(std::string(DEBRISFLOW_SOURCE_DIR) + "/cases/deposits/" + file, sets));
     app::RunOptions opt;
