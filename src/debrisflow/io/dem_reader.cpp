@@ -4,6 +4,7 @@
 #include "debrisflow/dem/materials.hpp"
 #include "debrisflow/dem/rolling_models_k.hpp"
 #include "debrisflow/io/named.hpp"
+#include "debrisflow/io/size_window.hpp"
 #include <algorithm>
 #include <filesystem>
 #include <fmt/format.h>
@@ -146,6 +147,27 @@ SizeSpec read_size(const ConfigTable& t) {
         s.max = size->positive("max", s.sieve_sizes.back());
     }
     if (s.max < s.min) size->fail("max", "must be >= min");
+    // A window that holds (almost) none of the distribution is a mistake, not a case: say so
+    // instead of drawing from a vanishing tail.
+    if (s.distribution == "lognormal") {
+        const Real kept = lognormal_window_probability(s);
+        if (!(kept >= 1e-9))
+            size->fail(size->has("max") ? "max" : "min",
+                       fmt::format("the window [min, max] = [{:.4g}, {:.4g}] m holds {:.3g} of the "
+                                   "lognormal distribution (d50 = {:.4g} m, sigma = {:.4g}); "
+                                   "check d50, sigma, min and max",
+                                   s.min, s.max, kept, s.d50, s.sigma));
+    } else if (s.distribution == "sieve") {
+        if (!(s.sieve_passing.back() > s.sieve_passing.front()))
+            size->fail("passing", "must rise from the first sieve to the last");
+        const Real kept = sieve_window_mass_fraction(s);
+        if (!(kept >= 1e-9))
+            size->fail(size->has("max") ? "max" : "min",
+                       fmt::format("the window [min, max] = [{:.4g}, {:.4g}] m holds {:.3g} of "
+                                   "the sieve curve's mass (sizes {:.4g} to {:.4g} m)",
+                                   s.min, s.max, kept, s.sieve_sizes.front(),
+                                   s.sieve_sizes.back()));
+    }
     size->finish();
     return s;
 }

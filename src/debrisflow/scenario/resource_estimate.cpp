@@ -60,13 +60,14 @@ double grain_volume(double d, const io::CaseSpec& c) {
     return c.dim == 3 ? pi / 6 * d * d * d : pi / 4 * d * d * c.dem.thickness;
 }
 
-// A representative diameter for counting grains of a given mass or volume: the median.
+// A representative diameter for counting grains of a given mass or volume: the median,
+// within the window [min, max] the sizes are drawn from.
 double median_diameter(const io::SizeSpec& s) {
-    if (s.distribution == "lognormal") return s.d50;
+    if (s.distribution == "lognormal") return std::clamp(s.d50, s.min, s.max);
     if (s.distribution == "sieve") {
         for (std::size_t i = 1; i < s.sieve_sizes.size(); ++i)
-            if (s.sieve_passing[i] >= 50) return s.sieve_sizes[i];
-        return s.sieve_sizes.back();
+            if (s.sieve_passing[i] >= 50) return std::clamp(s.sieve_sizes[i], s.min, s.max);
+        return std::clamp(s.sieve_sizes.back(), s.min, s.max);
     }
     return s.diameter > 0 ? s.diameter : s.min;
 }

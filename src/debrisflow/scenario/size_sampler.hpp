@@ -1,42 +1,31 @@
 #pragma once
 #include "debrisflow/io/case_spec.hpp"
-#include <cmath>
 #include <random>
+#include <vector>
 
 namespace debrisflow::scenario {
 
-// Draws diameters from the block's distribution. Sieve curves give mass passing, so sizes
-// drawn from that curve are kept with probability (d_min/d)^dim to turn mass into number.
+// Draws diameters from the block's distribution, exactly and in bounded time:
+// - lognormal truncated to [min, max]: rejection while the window holds at least half of the
+//   distribution (the seeded streams of the shipped cases), inverse CDF otherwise;
+// - sieve (mass passing, linear between sieves): a segment drawn by its number of grains, then
+//   d within it from the number density ∝ d^-dim (mass per grain ∝ d^dim), by inverse CDF.
 class SizeSampler {
 public:
-    SizeSampler(const io::SizeSpec& s, int dim, unsigned seed) : s_(s), dim_(dim), rng_(seed) {}
-    Real operator()() {
-        if (s_.distribution == "mono") return s_.diameter;
-        std::uniform_real_distribution<Real> u(0, 1);
-        for (;;) {
-            Real d;
-            if (s_.distribution == "lognormal") {
-                std::normal_distribution<Real> z(0, 1);
-                d = s_.d50 * std::exp(s_.sigma * z(rng_));
-            } else {
-                const Real p = u(rng_) * (s_.sieve_passing.back() - s_.sieve_passing.front()) +
-                               s_.sieve_passing.front();
-                std::size_t k = 1;
-                while (k + 1 < s_.sieve_passing.size() && s_.sieve_passing[k] < p) ++k;
-                const Real p0 = s_.sieve_passing[k - 1], p1 = s_.sieve_passing[k];
-                const Real f = p1 > p0 ? (p - p0) / (p1 - p0) : 0;
-                d = s_.sieve_sizes[k - 1] + f * (s_.sieve_sizes[k] - s_.sieve_sizes[k - 1]);
-                if (u(rng_) > std::pow(s_.min / d, Real(dim_))) continue;
-            }
-            if (d >= s_.min && d <= s_.max) return d;
-        }
-    }
+    SizeSampler(const io::SizeSpec& s, int dim, unsigned seed);
+    Real operator()();
     std::mt19937_64& rng() { return rng_; }
 
 private:
+    Real lognormal();
+    Real sieve();
     io::SizeSpec s_;
     int dim_;
     std::mt19937_64 rng_;
+    Real alpha_ = 0, beta_ = 0; // lognormal window in standard-normal units
+    bool reject_ = true;        // lognormal: rejection (window probability >= 1/2)
+    // sieve segments clipped to [min, max]: ends and cumulative number weights
+    std::vector<Real> seg_lo_, seg_hi_, seg_cum_;
 };
 
 } // namespace debrisflow::scenario
