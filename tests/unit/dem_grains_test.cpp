@@ -70,6 +70,68 @@ region = { shape = "box", min = [0, 0, 0], max = [0.1, 0.1, 0.25] }
         }
 }
 
+namespace {
+
+// Smallest gap between two grains, one from [0, split) and one from [split, n) (or any two
+// when split is 0): negative where they overlap.
+Real smallest_gap(const dem::GrainSet& g, Index split) {
+    Real gap = 1e30;
+    for (Index i = 0; i < g.size(); ++i)
+        for (Index j = std::max(i + 1, split); j < g.size(); ++j) {
+            if (split > 0 && i >= split) break;
+            const std::size_t a = std::size_t(i), b = std::size_t(j);
+            const Real dx = g.pos[a].x - g.pos[b].x, dy = g.pos[a].y - g.pos[b].y,
+                       dz = g.pos[a].z - g.pos[b].z;
+            gap = std::min(gap, std::sqrt(dx * dx + dy * dy + dz * dz) - g.radius[a] - g.radius[b]);
+        }
+    return gap;
+}
+
+} // namespace
+
+// A wide gradation built in two blocks, coarse first: the fine block's random insertion fills
+// the room the coarse grains leave, without touching them, and its own sizes (2 mm to 12 mm;
+// five size classes of the insertion grid with the coarse grains) do not overlap either.
+TEST(DemGrains, RandomBlockFillsAroundEarlierBlocks) {
+    app::Simulation sim(test::case_from_toml("dem_two_blocks", grains_case(R"([[grains]]
+name = "coarse"
+material = "glass"
+count = 40
+seed = 3
+diameter = 0.02
+region = { shape = "box", min = [0, 0, 0], max = [0.1, 0.1, 0.25] }
+[[grains]]
+name = "fine"
+material = "glass"
+count = 6000
+seed = 5
+size = { distribution = "lognormal", d50 = 0.003, sigma = 0.4, min = 0.002, max = 0.012 }
+region = { shape = "box", min = [0, 0, 0], max = [0.1, 0.1, 0.25] }
+)")));
+    const auto& g = sim.grains().grains();
+    ASSERT_EQ(g.size(), 6040);
+    EXPECT_GE(smallest_gap(g, 0), -1e-12);
+}
+
+// A lattice laid over grains of an earlier block is refused, naming the block and a grain.
+TEST(DemGrains, LatticeOverEarlierBlockIsRefused) {
+    const std::string e = error_of(grains_case(R"([[grains]]
+name = "loose"
+material = "glass"
+count = 200
+diameter = 0.005
+region = { shape = "box", min = [0, 0, 0], max = [0.1, 0.1, 0.1] }
+[[grains]]
+name = "stack"
+packing = "lattice"
+material = "glass"
+diameter = 0.005
+region = { shape = "box", min = [0, 0, 0], max = [0.1, 0.1, 0.1] }
+)"));
+    EXPECT_NE(e.find("grains 'stack': the grain of diameter 0.005 m at ("), std::string::npos) << e;
+    EXPECT_NE(e.find("overlaps a grain of an earlier [[grains]] block"), std::string::npos) << e;
+}
+
 // A sieve curve is mass passing: the mass fraction finer than the middle sieve size matches
 // the curve (tolerance 3 % of the total for ~20 kg-scale samples of 3000 grains).
 TEST(DemGrains, SieveCurveReproducesMassPassing) {

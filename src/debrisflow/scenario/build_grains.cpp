@@ -3,6 +3,7 @@
 #include "debrisflow/dem/box_faces.hpp"
 #include "debrisflow/io/named.hpp"
 #include "debrisflow/scenario/clump_template.hpp"
+#include "debrisflow/scenario/overlap_grid.hpp"
 #include "debrisflow/scenario/resource_estimate.hpp"
 #include "debrisflow/scenario/size_sampler.hpp"
 #include "debrisflow/scenario/stl_mesh.hpp"
@@ -14,7 +15,6 @@
 #include <optional>
 #include <random>
 #include <sstream>
-#include <unordered_map>
 
 namespace debrisflow::scenario {
 
@@ -116,21 +116,18 @@ struct GrainMaker {
 };
 
 // Random sequential insertion: uniform trial positions, rejected on overlap with any grain
-// already placed (hash grid of cell = largest diameter; clumps by their bounding spheres).
+// already placed (clumps by their bounding spheres), found through a grid per size class.
 void insert_random(const io::CaseSpec& c, const io::GrainsSpec& b, int mat, dem::GrainSet& g) {
     SizeSampler sizes(b.size, c.dim, b.seed);
     GrainMaker maker(c, b, mat);
     Region region(b.region, c.dim);
     Vec3 lo, hi;
     region.bounds(lo, hi);
-    const Real cell = 2 * maker.reach(b.size.max);
-    auto key = [&](Vec3 p) {
-        const long i = long(std::floor((p.x - lo.x) / cell)),
-                   j = long(std::floor((p.y - lo.y) / cell)),
-                   k = long(std::floor((p.z - lo.z) / cell));
-        return (i * 73856093L) ^ (j * 19349663L) ^ (k * 83492791L);
-    };
-    std::unordered_multimap<long, std::pair<Vec3, Real>> placed;
+    // Grains of earlier blocks are obstacles: the block fills the room they leave.
+    Real r_lo = maker.reach(b.size.min), r_hi = maker.reach(b.size.max);
+    for (Real r : g.radius) r_lo = std::min(r_lo, r), r_hi = std::max(r_hi, r);
+    OverlapGrid placed(r_lo, r_hi, c.dim);
+    for (std::size_t i = 0; i < g.radius.size(); ++i) placed.add(g.pos[i], g.radius[i]);
     std::uniform_real_distribution<Real> u(0, 1);
     auto& rng = sizes.rng();
     Real mass = 0;
@@ -141,29 +138,20 @@ void insert_random(const io::CaseSpec& c, const io::GrainsSpec& b, int mat, dem:
         const Real r = maker.reach(d);
         Vec3 p{lo.x + u(rng) * (hi.x - lo.x), c.dim == 2 ? 0 : lo.y + u(rng) * (hi.y - lo.y),
                lo.z + u(rng) * (hi.z - lo.z)};
-        bool ok = region.holds(p, r);
-        for (int dz = -1; ok && dz <= 1; ++dz)
-            for (int dy = -1; ok && dy <= 1; ++dy)
-                for (int dx = -1; ok && dx <= 1; ++dx) {
-                    const auto range =
-                        placed.equal_range(key(p + Vec3{dx * cell, dy * cell, dz * cell}));
-                    for (auto it = range.first; ok && it != range.second; ++it) {
-                        const Vec3 s = p - it->second.first;
-                        const Real reach = r + it->second.second;
-                        ok = dot(s, s) >= reach * reach;
-                    }
-                }
+        const bool ok = region.holds(p, r) && !placed.overlaps(p, r);
         if (!ok) {
             if (++failures > max_failures)
                 throw InputError(fmt::format(
                     "{}: grains '{}': random insertion placed {} grains ({:.4g} kg) and found no "
-                    "room for more after {} tries; enlarge the region or use packing = "
-                    "\"lattice\" and settle",
-                    b.origin.block(), b.name, count, mass, max_failures));
+                    "room for the next (diameter {:.4g} m) in {} tries; enlarge the region, use "
+                    "packing = \"lattice\" and settle, or, for a wide gradation, give the coarse "
+                    "fraction its own [[grains]] block before this one (later blocks fill around "
+                    "earlier ones)",
+                    b.origin.block(), b.name, count, mass, d, max_failures));
             continue;
         }
         failures = 0;
-        placed.emplace(key(p), std::make_pair(p, r));
+        placed.add(p, r);
         mass += maker.add(g, p, d);
         ++count;
         d = sizes();
@@ -239,6 +227,29 @@ void read_state(const io::CaseSpec& c, const io::GrainsSpec& b, dem::GrainSet& g
                                      b.origin.at("region"), b.name, p.string()));
 }
 
+// A lattice, a single grain or a saved state must not overlap the grains of earlier blocks
+// by more than 1 % of its grains' radius (random insertion places grains around them).
+void require_clear_of_earlier_blocks(const io::CaseSpec& c, const io::GrainsSpec& b,
+                                     const dem::GrainSet& g, Index before) {
+    if (before == 0) return;
+    Real r_lo = g.radius[0], r_hi = g.radius[0];
+    for (Index i = 0; i < before; ++i)
+        r_lo = std::min(r_lo, g.radius[std::size_t(i)]),
+        r_hi = std::max(r_hi, g.radius[std::size_t(i)]);
+    OverlapGrid earlier(r_lo, r_hi, c.dim);
+    for (Index i = 0; i < before; ++i) earlier.add(g.pos[std::size_t(i)], g.radius[std::size_t(i)]);
+    for (Index i = before; i < g.size(); ++i) {
+        const Vec3 p = g.pos[std::size_t(i)];
+        const Real r = g.radius[std::size_t(i)];
+        if (earlier.overlaps(p, Real(0.99) * r))
+            throw InputError(fmt::format(
+                "{}: grains '{}': the grain of diameter {:.4g} m at ({:.4g}, {:.4g}, {:.4g}) m "
+                "overlaps a grain of an earlier [[grains]] block; move the region, or use "
+                "packing = \"random\", which places grains around earlier blocks",
+                b.origin.block(), b.name, 2 * r, p.x, p.y, p.z));
+    }
+}
+
 } // namespace
 
 void build_grains(const io::CaseSpec& c, dem::GrainSet& g) {
@@ -255,6 +266,7 @@ void build_grains(const io::CaseSpec& c, dem::GrainSet& g) {
             else
                 insert_random(c, b, mat, g);
         }
+        if (b.packing != "random") require_clear_of_earlier_blocks(c, b, g, before);
         for (Index i = before; i < g.size(); ++i)
             for (int d = 0; d < 3; ++d) {
                 if (c.dim == 2 && d == 1) continue;
