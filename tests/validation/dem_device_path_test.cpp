@@ -384,6 +384,7 @@ every = 0.005
 name = "on_pusher"
 type = "runup"
 wall = "pusher"
+bed = 0
 every = 0.005
 )");
     std::size_t at_start = 0, at_end = 0;

@@ -25,7 +25,7 @@ std::unique_ptr<Probe> RunupProbe::from_config(const ProbeSetup& s) {
     s.require(s.c.has_dem, "[[grains]]");
     const int wall = s.wall();
     return std::make_unique<RunupProbe>(s.name(), s.every(), wall,
-                                        s.t.real("bed", s.c.domain.lo.z));
+                                        s.bed());
 }
 
 std::unique_ptr<Probe> MassFluxProbe::from_config(const ProbeSetup& s) {

@@ -145,7 +145,7 @@ std::unique_ptr<Probe> FluidRunupProbe::from_config(const ProbeSetup& s) {
     s.require(!s.c.fluids.empty(), "a fluid");
     const int wall = s.wall();
     return std::make_unique<FluidRunupProbe>(s.name(), s.every(), s.c.walls[std::size_t(wall)],
-                                             s.t.real("bed", s.c.domain.lo.z), s.c);
+                                             s.bed(), s.c);
 }
 
 std::vector<Real> TrappingProbe::sample(Real t, const ProbeContext& ctx) {

@@ -8,6 +8,14 @@ void ProbeSetup::require(bool ok, const std::string& what) const {
     if (!ok) t.fail("type", "a " + spec.type + " probe needs " + what);
 }
 
+Real ProbeSetup::bed() const {
+    if (!t.has("bed"))
+        t.fail("bed", fmt::format("a {} probe measures heights from the floor: give bed = the "
+                                  "floor's height z (domain.min.z = {:g} usually lies below it)",
+                                  spec.type, c.domain.lo.z));
+    return t.real("bed");
+}
+
 Vec3 ProbeSetup::point_in_domain(const std::string& key) const {
     const Vec3 p = t.vec3(key, c.dim);
     require_in_domain(key, p);

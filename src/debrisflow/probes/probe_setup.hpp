@@ -28,6 +28,9 @@ struct ProbeSetup {
     // A non-zero vector, made unit.
     Vec3 direction(const std::string& key) const;
     Vec3 direction(const std::string& key, Vec3 fallback) const;
+    // `bed`, the floor's height that a deposit's or run-up's heights are measured from;
+    // required, since the domain's lower bound usually lies below the floor.
+    Real bed() const;
     // The wall named by `wall`: its index in c.walls.
     int wall() const;
     // Rejects `key` unless a probe above this one is called `name` and is of one of `types`.

@@ -146,7 +146,7 @@ std::unique_ptr<Probe> RunoutProbe::from_config(const ProbeSetup& s) {
     if (!(gap >= 0 && gap <= 1))
         s.t.fail("gap", "must lie in [0, 1] (a fraction of the smaller grain's diameter)");
     return std::make_unique<RunoutProbe>(s.name(), s.every(), axis, a.front() == '-' ? -1 : 1,
-                                         s.t.real("bed", s.c.domain.lo.z), gap);
+                                         s.bed(), gap);
 }
 
 // Every grain's row, in id order, from where the grains are (GrainReader::rows).
