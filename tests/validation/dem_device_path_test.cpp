@@ -384,7 +384,7 @@ every = 0.005
 name = "on_pusher"
 type = "runup"
 wall = "pusher"
-bed = 0
+bed = -0.02
 every = 0.005
 )");
     std::size_t at_start = 0, at_end = 0;
@@ -411,7 +411,7 @@ every = 0.005
     const auto& across = s.probes[3].back(); // time, flux, cumulative
     EXPECT_NEAR(across[2], double(net) * disc, 1e-9 * disc);
     // The deposit ahead of the plane and the run-up on the pusher (at 0.6 m/s from x = 0; the
-    // grains' tops above the domain's floor, z = -0.02 m, within 1.05 r of it), against the same
+    // grains' tops above bed = -0.02 m, the domain's floor, within 1.05 r of it), against the same
     // record.
     long ahead_now = 0;
     double top = 0;

@@ -39,8 +39,10 @@ Real SizeSampler::operator()() {
 
 Real SizeSampler::lognormal() {
     if (reject_) {
-        std::normal_distribution<Real> z(0, 1);
         for (;;) {
+            // a fresh distribution per draw (it would otherwise hand out the cached second
+            // value of its pair): the seeded streams of earlier versions, grain for grain
+            std::normal_distribution<Real> z(0, 1);
             const Real d = s_.d50 * std::exp(s_.sigma * z(rng_));
             if (d >= s_.min && d <= s_.max) return d;
         }
