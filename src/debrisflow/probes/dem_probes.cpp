@@ -24,8 +24,7 @@ std::unique_ptr<Probe> KineticEnergyProbe::from_config(const ProbeSetup& s) {
 std::unique_ptr<Probe> RunupProbe::from_config(const ProbeSetup& s) {
     s.require(s.c.has_dem, "[[grains]]");
     const int wall = s.wall();
-    return std::make_unique<RunupProbe>(s.name(), s.every(), wall,
-                                        s.bed());
+    return std::make_unique<RunupProbe>(s.name(), s.every(), wall, s.bed());
 }
 
 std::unique_ptr<Probe> MassFluxProbe::from_config(const ProbeSetup& s) {
