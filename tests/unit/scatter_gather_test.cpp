@@ -54,6 +54,11 @@ TEST(ScatterGather, ArtificialFourtakas) {
 TEST(ScatterGather, LaminarMolteni) {
     compare({"sph.viscosity=\"laminar\"", "sph.nu=1e-3", "sph.diffusion=\"molteni\""});
 }
+// Antuono's diffusion reads the renormalised density gradients: the half list sums them over
+// its pairs (SphSolver::update_density_gradient), the gather over cells.
+TEST(ScatterGather, ArtificialAntuono) {
+    compare({"sph.diffusion=\"antuono\""});
+}
 TEST(ScatterGather, SpsCubic) {
     compare({"sph.viscosity=\"laminar_sps\"", "sph.nu=1e-6", "sph.kernel=\"cubic_spline\""});
 }

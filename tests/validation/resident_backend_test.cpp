@@ -294,6 +294,13 @@ TEST(ResidentBackend, DamBreakMdbc) {
           0.015, 1000);
 }
 
+// Antuono's delta-SPH diffusion: the renormalised density gradients computed where the
+// particles are, in their own pass before the pair terms.
+TEST(ResidentBackend, DamBreakAntuono) {
+    check("cases/dambreak2d.toml", {"sph.diffusion=\"antuono\"", "dp=0.015", "output.vtk=false"},
+          0.3, 0.015, 1000);
+}
+
 // mDBC's no-slip with a Bingham slurry: the ghost-node velocities, held where the particles
 // are, in the apparent viscosity's strain rate and in the viscous pair term.
 TEST(ResidentBackend, BinghamCollapseMdbcNoSlip) {

@@ -8,7 +8,9 @@ namespace debrisflow::models {
 
 // Each model gives both sides of a fluid-fluid pair: drho_i += d.first, drho_j += d.second.
 // Each also says how its parameters follow from the fluid (static configure(context), host
-// only); sph/sph_models.hpp lists the models.
+// only) and whether its pair term reads the particles' renormalised density gradients
+// (needs_density_gradient: PairState::grad_rho_i/j, sph/density_gradient_k.hpp);
+// sph/sph_models.hpp lists the models.
 struct DensityRates {
     Real i, j;
 };
@@ -16,6 +18,7 @@ struct DensityRates {
 // No density diffusion: plain continuity equation.
 struct NoDiffusion {
     static constexpr const char* name = "none";
+    static constexpr bool needs_density_gradient = false;
     static NoDiffusion configure(const DiffusionContext&) { return {}; }
     DF_HD DF_HOT_INLINE DensityRates pair(const PairState&) const { return {0, 0}; }
 };
@@ -24,6 +27,7 @@ struct NoDiffusion {
 // D_i = delta h c0 sum 2 (rho_j - rho_i) (x_j - x_i).grad_i W / |x_ij|^2 m_j / rho_j.
 struct MolteniColagrossi {
     static constexpr const char* name = "molteni";
+    static constexpr bool needs_density_gradient = false;
     Real delta = 0.1, h = 0, c0 = 0;
 
     static MolteniColagrossi configure(const DiffusionContext& c) {
@@ -44,6 +48,7 @@ struct MolteniColagrossi {
 // rho^H_j - rho^H_i = rho0 [(1 + rho0 g.(x_j - x_i) / B)^(1/gamma) - 1], B = c0^2 rho0 / gamma.
 struct Fourtakas {
     static constexpr const char* name = "fourtakas";
+    static constexpr bool needs_density_gradient = false;
     Real delta = 0.1, h = 0, c0 = 0;
     Real rho0 = 1000, inv_gamma = 1.0 / 7, g_over_b[3] = {0, 0, 0}; // rho0 g / B
 
@@ -70,6 +75,31 @@ struct Fourtakas {
         // a pair, so the truncation (a (a-1)(a-2)(a-3)/24 x^4) is below 1e-9 relative.
         const Real a = inv_gamma;
         return rho0 * a * x * (1 + Real(0.5) * (a - 1) * x * (1 + (a - 2) / 3 * x));
+    }
+};
+
+// delta-SPH density diffusion with renormalised gradients (Antuono, Colagrossi, Marrone &
+// Molteni 2010, eqs. 5-6): D_i = delta h c0 sum_j psi_ji . grad_i W_ij m_j / rho_j,
+// psi_ji = 2 (rho_j - rho_i) (x_j - x_i) / |x_ij|^2 - (<grad rho>^L_i + <grad rho>^L_j).
+// The second term removes what the first gives for a linear density field, hydrostatic or
+// not, so the term is of order h^2 (Molteni's and Fourtakas's are of order h where the
+// pressure field is not hydrostatic, as behind an impact).
+struct Antuono {
+    static constexpr const char* name = "antuono";
+    static constexpr bool needs_density_gradient = true;
+    Real delta = 0.1, h = 0, c0 = 0;
+
+    static Antuono configure(const DiffusionContext& c) {
+        Antuono d;
+        d.delta = c.delta, d.h = c.h, d.c0 = c.c0;
+        return d;
+    }
+
+    DF_HD DF_HOT_INLINE DensityRates pair(const PairState& s) const {
+        // 2 (rho_j - rho_i) (x_j - x_i).grad_i W / |x_ij|^2 = -2 f (rho_j - rho_i), exactly
+        const Vec3 g = s.grad_rho_i + s.grad_rho_j;
+        const Real k = delta * h * c0 * (-2 * s.f * (s.rho_j - s.rho_i) - dot(g, s.grad_w));
+        return {k * s.vol_j, -k * s.vol_i};
     }
 };
 

@@ -19,6 +19,9 @@ struct PairState {
     Real c_i, c_j;
     Real mu_i, mu_j; // apparent dynamic viscosities (generalised-Newtonian models only)
     bool boundary_j; // j is a boundary particle
+    // renormalised density gradients <grad rho>^L of i and j (fluid-fluid pairs of diffusion
+    // models with needs_density_gradient; unset otherwise)
+    Vec3 grad_rho_i, grad_rho_j;
 };
 
 } // namespace debrisflow::models

@@ -33,6 +33,9 @@ template <class Kernel, class Viscosity, class Diffusion> struct PairTerms {
     NoSlipWall wall; // the wall velocity the viscous terms see (Morris's or mDBC's no-slip)
     Real eta2;       // 0.01 h^2, regulariser of 1 / r^2 (Monaghan 1992)
     models::TaitEos eos{}; // the sound speed where cs is nullptr
+    // renormalised density gradients, 3 per particle (RenormalisedDensityGradient), for
+    // diffusion models with needs_density_gradient; nullptr otherwise
+    const Real* grad_rho = nullptr;
 
     // a_i += m_j g, a_j -= m_i g; drho_i += m_j cont + d.i, drho_j += m_i cont + d.j;
     // grad_w = grad_i W_ij (the velocity gradient of the SPS stress sums over it).
@@ -91,6 +94,11 @@ template <class Kernel, class Viscosity, class Diffusion> struct PairTerms {
         out.cont = dot(s.v, s.grad_w);
         out.g = (-(a.prho + b.prho)) * s.grad_w + visc.acceleration(s);
         if constexpr (Viscosity::needs_velocity_gradient) out.g += tau_dot(i, j, s.grad_w);
+        if constexpr (Diffusion::needs_density_gradient)
+            if (!s.boundary_j) {
+                s.grad_rho_i = {grad_rho[3 * i], grad_rho[3 * i + 1], grad_rho[3 * i + 2]};
+                s.grad_rho_j = {grad_rho[3 * j], grad_rho[3 * j + 1], grad_rho[3 * j + 2]};
+            }
         out.d = s.boundary_j ? models::DensityRates{0, 0} : diff.pair(s);
         out.grad_w = s.grad_w;
         return out;

@@ -14,6 +14,7 @@
 #include "debrisflow/neighbors/cell_keys_k.hpp"
 #include "debrisflow/rigid/body_solver.hpp"
 #include "debrisflow/sph/apparent_viscosity_k.hpp"
+#include "debrisflow/sph/density_gradient_k.hpp"
 #include "debrisflow/sph/interaction_k.hpp"
 #include "debrisflow/sph/mdbc_k.hpp"
 #include "debrisflow/sph/resident_backend.hpp"
@@ -114,6 +115,13 @@ public:
                 auto terms = host_.pair_terms(pv, kernel, visc, diff, nullptr, nullptr, nullptr,
                                               sps_ ? tau_.data() : nullptr);
                 terms.wall = wall;
+                using K = std::decay_t<decltype(kernel)>;
+                if constexpr (std::decay_t<decltype(diff)>::needs_density_gradient) {
+                    grad_rho_.resize(3 * n_); // scratch of this evaluation
+                    Space::for_each(n_, RenormalisedDensityGradient<K>{pv, grid_, kernel,
+                                                                       grad_rho_.data(), p.dim});
+                    terms.grad_rho = grad_rho_.data();
+                }
                 Space::for_each(n_, make_gather(terms, grid_, p.gravity, sps.smag, sps.blin,
                                                 sps_ ? tau_next_.data() : nullptr));
             },
@@ -202,7 +210,8 @@ public:
     std::size_t memory_bytes() const override {
         std::size_t b = sorter_bytes() + keys_.bytes() + order_.bytes() + start_cells_.bytes() +
                         tau_.bytes() + tau_next_.bytes() + kind_.bytes() + group_.bytes() +
-                        id_.bytes() + ghost_.bytes() + leave_.bytes() + pos_.bytes();
+                        id_.bytes() + ghost_.bytes() + grad_rho_.bytes() + leave_.bytes() +
+                        pos_.bytes();
         for (const auto& a : real_) b += a.bytes();
         for (const auto& a : old_) b += a.bytes();
         for (const auto& a : start_) b += a.bytes();
@@ -609,7 +618,8 @@ private:
     std::array<Buffer<Real>, 4> old_;   // Verlet: v and rho at t_n-1
     std::array<Buffer<Real>, 7> start_; // symplectic: x, v and rho at t_n
     Buffer<Real> tau_, tau_next_;
-    Buffer<Real> ghost_; // mDBC's no-slip: (v_g - v_b, seen) per particle, each evaluation
+    Buffer<Real> grad_rho_; // renormalised density gradients (diffusion "antuono"), each evaluation
+    Buffer<Real> ghost_;    // mDBC's no-slip: (v_g - v_b, seen) per particle, each evaluation
     Buffer<std::uint8_t> kind_;
     Buffer<std::int16_t> group_;
     Buffer<ParticleId> id_;

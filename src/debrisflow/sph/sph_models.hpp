@@ -7,8 +7,8 @@ namespace debrisflow::sph {
 
 // Model families of the WCSPH solver, each selectable by name in the case file (viscosity:
 // sph/viscosity_registry.hpp).
-using DiffusionRegistry =
-    models::Registry<models::NoDiffusion, models::MolteniColagrossi, models::Fourtakas>;
+using DiffusionRegistry = models::Registry<models::NoDiffusion, models::MolteniColagrossi,
+                                           models::Fourtakas, models::Antuono>;
 using Diffusion = DiffusionRegistry::Variant;
 
 // The concrete models for a parameter set (names are validated when the case is read).

@@ -3,6 +3,7 @@
 #include "debrisflow/core/stopwatch.hpp"
 #include "debrisflow/exec/parallel.hpp"
 #include "debrisflow/sph/apparent_viscosity_k.hpp"
+#include "debrisflow/sph/density_gradient_k.hpp"
 #include "debrisflow/sph/interaction_k.hpp"
 #include "debrisflow/sph/sph_solver_gather.hpp"
 #include "debrisflow/sph/time_schemes_k.hpp"
@@ -153,6 +154,39 @@ void SphSolver::update_viscosity(bool pairs) {
         models_.kernel, models_.viscosity);
 }
 
+void SphSolver::update_density_gradient() {
+    // Half pair list: fluid pair (i, j) adds (rho_j - rho_i) V_j f r and -V_j f r (x) r to i,
+    // and with r -> -r, rho_j - rho_i -> rho_i - rho_j the same products with V_i to j.
+    auto pv = set_.view();
+    const auto gv = grid_.view();
+    const Real support2 = support_ * support_;
+    const Real* vol = vol_.data(); // m / rho, from update_pressure()
+    Real* out = grad_rho_.data();
+    const int dim = params_.dim;
+    std::visit(
+        [&](const auto& kernel) {
+            exec::for_each_pair_w<9>(
+                list_, pv.n, buffers_, [=](Index i) { return GradientSide::of(pv, vol, i); },
+                [=](const GradientSide& a, Index i, Index j, Real* di, Real* dj) {
+                    if (!a.fluid || !pv.is_fluid(j)) return;
+                    const Vec3 r = gv.separation(a.x, pv.pos(j));
+                    const Real r2 = dot(r, r);
+                    if (r2 >= support2) return;
+                    const Real f = kernel.grad_over_r(std::sqrt(r2));
+                    const Real drho = pv.rho[j] - pv.rho[i];
+                    add_density_gradient_pair(di, drho, vol[j] * f, r);
+                    add_density_gradient_pair(dj, drho, vol[i] * f, r);
+                },
+                [=](Index i, const Real* acc) {
+                    const Vec3 g = pv.is_fluid(i) ? renormalised_gradient(acc, dim) : Vec3{};
+                    out[3 * i] = g.x;
+                    out[3 * i + 1] = g.y;
+                    out[3 * i + 2] = g.z;
+                });
+        },
+        models_.kernel);
+}
+
 Real SphSolver::max_kinematic_viscosity() const {
     const bool apparent = std::visit(
         [](const auto& v) { return std::decay_t<decltype(v)>::needs_apparent_viscosity; },
@@ -262,8 +296,8 @@ void SphSolver::verlet_step(Real dt, bool euler) {
 std::size_t SphSolver::memory_bytes() const {
     std::size_t b = set_.bytes() + grid_.bytes() + list_.bytes();
     for (const auto& t : buffers_.per_thread) b += bytes_of(t);
-    return b + bytes_of(prho_, cs_, vol_, tau_next_, ghost_velocity_, mdbc_rows_, xref_, yref_,
-                        zref_, x0_, y0_, z0_, vx0_, vy0_, vz0_, rho0_);
+    return b + bytes_of(prho_, cs_, vol_, tau_next_, grad_rho_, ghost_velocity_, mdbc_rows_, xref_,
+                        yref_, zref_, x0_, y0_, z0_, vx0_, vy0_, vz0_, rho0_);
 }
 
 void SphSolver::add_timings(time::Timings& t) const {

@@ -108,6 +108,9 @@ private:
     // Apparent viscosities of a generalised-Newtonian fluid: over the half pair list (`pairs`)
     // or by a per-particle gather over the cell grid.
     void update_viscosity(bool pairs);
+    // Renormalised density gradients of the fluid particles over the half pair list into
+    // grad_rho_ (diffusion models with needs_density_gradient; sph_solver_gather.hpp).
+    void update_density_gradient();
     // Largest kinematic viscosity now (the viscous time-step limit).
     Real max_kinematic_viscosity() const;
     // Updates pressures (and SPS stresses) and calls f(PairTerms<K, V, D>) for the case's models.
@@ -123,6 +126,7 @@ private:
     neighbors::CellGrid grid_;
     std::vector<Real> prho_, cs_, vol_;
     std::vector<Real> tau_next_; // SPS stress of the gather loop, swapped in after it
+    std::vector<Real> grad_rho_; // renormalised density gradients (diffusion "antuono")
     // sph.no_slip = "mdbc": per particle v_ghost - v_b and whether the ghost saw fluid (4 per
     // particle; written by update_boundary_density, read in the same force evaluation)
     std::vector<Real> ghost_velocity_;

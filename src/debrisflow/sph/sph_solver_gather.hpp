@@ -1,6 +1,8 @@
 #pragma once
 // SphSolver's template members that hand its pair terms and its gather loop body to a caller:
 // included by sph_solver.cpp and by backends that run the loop elsewhere (bench/gpu).
+#include "debrisflow/exec/parallel.hpp"
+#include "debrisflow/sph/density_gradient_k.hpp"
 #include "debrisflow/sph/interaction_k.hpp"
 #include "debrisflow/sph/sph_solver.hpp"
 #include <variant>
@@ -30,9 +32,21 @@ template <class F> void SphSolver::with_pair_terms(F&& f, bool pairs) {
             // The half list reads p / rho^2, c and m / rho from arrays; the gather computes
             // them where it loads a particle (no arrays: less memory, as on a device).
             const bool arrays = pairs;
-            f(pair_terms(pv, kernel, visc, diff, arrays ? prho_.data() : nullptr,
-                         arrays ? cs_.data() : nullptr, arrays ? vol_.data() : nullptr,
-                         sps ? set_.sps_tau.data() : nullptr));
+            auto terms = pair_terms(pv, kernel, visc, diff, arrays ? prho_.data() : nullptr,
+                                    arrays ? cs_.data() : nullptr, arrays ? vol_.data() : nullptr,
+                                    sps ? set_.sps_tau.data() : nullptr);
+            using K = std::decay_t<decltype(kernel)>;
+            if constexpr (std::decay_t<decltype(diff)>::needs_density_gradient) {
+                grad_rho_.resize(3 * std::size_t(pv.n));
+                if (pairs)
+                    update_density_gradient();
+                else
+                    exec::for_each(pv.n,
+                                   RenormalisedDensityGradient<K>{pv, grid_.view(), kernel,
+                                                                  grad_rho_.data(), params_.dim});
+                terms.grad_rho = grad_rho_.data();
+            }
+            f(terms);
         },
         models_.kernel, models_.viscosity, models_.diffusion);
 }
