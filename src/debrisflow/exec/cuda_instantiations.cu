@@ -18,6 +18,7 @@
 #include "debrisflow/models/viscosity_k.hpp"
 #include "debrisflow/neighbors/cell_keys_k.hpp"
 #include "debrisflow/probes/fluid_samples_k.hpp"
+#include "debrisflow/sph/density_gradient_k.hpp"
 #include "debrisflow/sph/interaction_k.hpp"
 #include "debrisflow/sph/resident_sph.hpp"
 #include "debrisflow/sph/time_schemes_k.hpp"
@@ -53,6 +54,8 @@ template <class K> void instantiate_kernel() {
     instantiate_viscosities<K>(static_cast<sph::ViscosityRegistry*>(nullptr));
     instantiate_interaction<K, models::ArtificialViscosity, models::NoDiffusion>();
     instantiate_interaction<K, models::ArtificialViscosity, models::MolteniColagrossi>();
+    instantiate_interaction<K, models::ArtificialViscosity, models::Antuono>();
+    launch(0, sph::RenormalisedDensityGradient<K>{}); // the gradients Antuono's model reads
 }
 
 // A per-particle quantity that a loop reduces over (the stable step, the health check),
