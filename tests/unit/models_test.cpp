@@ -21,7 +21,7 @@ TEST(Registries, NamesAndChoices) {
               (std::vector<std::string>{"artificial", "laminar", "laminar_sps", "bingham",
                                         "herschel_bulkley", "mu_i", "carreau_yasuda"}));
     EXPECT_EQ(sph::DiffusionRegistry::names(),
-              (std::vector<std::string>{"none", "molteni", "fourtakas"}));
+              (std::vector<std::string>{"none", "molteni", "fourtakas", "antuono"}));
     EXPECT_TRUE(sph::DiffusionRegistry::has("fourtakas"));
 }
 
