@@ -29,6 +29,7 @@ sph::FluidInteraction<K, V, D> to_device(sph::FluidInteraction<K, V, D> f, std::
     f.terms.cs = a.copy_in(f.terms.cs, n);
     f.terms.vol = a.copy_in(f.terms.vol, n);
     f.terms.tau = a.copy_in(f.terms.tau, 6 * n);
+    if (f.terms.grad_rho) f.terms.grad_rho = a.copy_in(f.terms.grad_rho, 3 * n);
     f.grid.start = a.copy_in(f.grid.start, cells * std::size_t(f.grid.classes) + 1);
     f.grid.order = a.copy_in(f.grid.order, n);
     f.tau_next = V::needs_velocity_gradient ? a.alloc<Real>(6 * n) : nullptr;

@@ -154,7 +154,19 @@ void SphSolver::update_viscosity(bool pairs) {
         models_.kernel, models_.viscosity);
 }
 
-void SphSolver::update_density_gradient() {
+void SphSolver::update_density_gradient(bool pairs) {
+    grad_rho_.resize(3 * std::size_t(set_.size()));
+    if (!pairs) {
+        std::visit(
+            [&](const auto& kernel) {
+                using K = std::decay_t<decltype(kernel)>;
+                exec::for_each(set_.size(),
+                               RenormalisedDensityGradient<K>{set_.view(), grid_.view(), kernel,
+                                                              grad_rho_.data(), params_.dim});
+            },
+            models_.kernel);
+        return;
+    }
     // Half pair list: fluid pair (i, j) adds (rho_j - rho_i) V_j f r and -V_j f r (x) r to i,
     // and with r -> -r, rho_j - rho_i -> rho_i - rho_j the same products with V_i to j.
     auto pv = set_.view();

@@ -108,9 +108,10 @@ private:
     // Apparent viscosities of a generalised-Newtonian fluid: over the half pair list (`pairs`)
     // or by a per-particle gather over the cell grid.
     void update_viscosity(bool pairs);
-    // Renormalised density gradients of the fluid particles over the half pair list into
-    // grad_rho_ (diffusion models with needs_density_gradient; sph_solver_gather.hpp).
-    void update_density_gradient();
+    // Renormalised density gradients of the fluid particles into grad_rho_, over the half pair
+    // list (`pairs`) or by a gather over the cell grid (diffusion models with
+    // needs_density_gradient).
+    void update_density_gradient(bool pairs);
     // Largest kinematic viscosity now (the viscous time-step limit).
     Real max_kinematic_viscosity() const;
     // Updates pressures (and SPS stresses) and calls f(PairTerms<K, V, D>) for the case's models.

@@ -1,8 +1,6 @@
 #pragma once
 // SphSolver's template members that hand its pair terms and its gather loop body to a caller:
 // included by sph_solver.cpp and by backends that run the loop elsewhere (bench/gpu).
-#include "debrisflow/exec/parallel.hpp"
-#include "debrisflow/sph/density_gradient_k.hpp"
 #include "debrisflow/sph/interaction_k.hpp"
 #include "debrisflow/sph/sph_solver.hpp"
 #include <variant>
@@ -35,15 +33,8 @@ template <class F> void SphSolver::with_pair_terms(F&& f, bool pairs) {
             auto terms = pair_terms(pv, kernel, visc, diff, arrays ? prho_.data() : nullptr,
                                     arrays ? cs_.data() : nullptr, arrays ? vol_.data() : nullptr,
                                     sps ? set_.sps_tau.data() : nullptr);
-            using K = std::decay_t<decltype(kernel)>;
             if constexpr (std::decay_t<decltype(diff)>::needs_density_gradient) {
-                grad_rho_.resize(3 * std::size_t(pv.n));
-                if (pairs)
-                    update_density_gradient();
-                else
-                    exec::for_each(pv.n,
-                                   RenormalisedDensityGradient<K>{pv, grid_.view(), kernel,
-                                                                  grad_rho_.data(), params_.dim});
+                update_density_gradient(pairs);
                 terms.grad_rho = grad_rho_.data();
             }
             f(terms);
