@@ -16,39 +16,55 @@ namespace debrisflow::sph {
 // det(L^-1) below which the plain sum is kept: a flat free surface gives about 0.5^dim.
 inline constexpr Real renormalisation_min_det = Real(0.01);
 
+// The sums per particle: 2D (the x-z plane) s.x, s.z, a_xx, a_zz, a_xz; 3D s.x, s.y, s.z,
+// a_xx, a_yy, a_zz, a_xy, a_xz, a_yz.
+template <int Dim> inline constexpr int density_gradient_sums = Dim == 2 ? 5 : 9;
+
 // Adds pair (i, j)'s terms to particle i's sums: s += (rho_j - rho_i) grad_i W_ij V_j and
-// a += (x_j - x_i) (x) grad_i W_ij V_j = -f r (x) r V_j (symmetric: xx, yy, zz, xy, xz, yz),
-// with r = x_i - x_j, f = (dW/dr) / r, vf = V_j f.
-DF_HD DF_HOT_INLINE void add_density_gradient_pair(Real acc[9], Real drho, Real vf, Vec3 r) {
-    acc[0] += drho * vf * r.x;
-    acc[1] += drho * vf * r.y;
-    acc[2] += drho * vf * r.z;
-    acc[3] -= vf * r.x * r.x;
-    acc[4] -= vf * r.y * r.y;
-    acc[5] -= vf * r.z * r.z;
-    acc[6] -= vf * r.x * r.y;
-    acc[7] -= vf * r.x * r.z;
-    acc[8] -= vf * r.y * r.z;
+// a += (x_j - x_i) (x) grad_i W_ij V_j = -f r (x) r V_j (symmetric), with r = x_i - x_j,
+// f = (dW/dr) / r, vf = V_j f.
+template <int Dim>
+DF_HD DF_HOT_INLINE void add_density_gradient_pair(Real* acc, Real drho, Real vf, Vec3 r) {
+    const Real g = drho * vf;
+    if constexpr (Dim == 2) {
+        acc[0] += g * r.x;
+        acc[1] += g * r.z;
+        acc[2] -= vf * r.x * r.x;
+        acc[3] -= vf * r.z * r.z;
+        acc[4] -= vf * r.x * r.z;
+    } else {
+        acc[0] += g * r.x;
+        acc[1] += g * r.y;
+        acc[2] += g * r.z;
+        acc[3] -= vf * r.x * r.x;
+        acc[4] -= vf * r.y * r.y;
+        acc[5] -= vf * r.z * r.z;
+        acc[6] -= vf * r.x * r.y;
+        acc[7] -= vf * r.x * r.z;
+        acc[8] -= vf * r.y * r.z;
+    }
 }
 
-// L s from the sums of add_density_gradient_pair (acc[0..3) = s, acc[3..9) = L^-1), or s where
-// L^-1 is nearly singular; 2D cases lie in the x-z plane (the y row and column left out).
-DF_HD inline Vec3 renormalised_gradient(const Real acc[9], int dim) {
-    const Vec3 s{acc[0], acc[1], acc[2]};
-    const Real* a = acc + 3;
-    if (dim == 2) {
-        const Real det = a[0] * a[2] - a[4] * a[4];
+// L s from the sums of add_density_gradient_pair, or s where L^-1 is nearly singular.
+template <int Dim> DF_HD inline Vec3 renormalised_gradient(const Real* acc) {
+    if constexpr (Dim == 2) {
+        const Real sx = acc[0], sz = acc[1], xx = acc[2], zz = acc[3], xz = acc[4];
+        const Real det = xx * zz - xz * xz;
+        if (det <= renormalisation_min_det) return {sx, 0, sz};
+        return {(zz * sx - xz * sz) / det, 0, (xx * sz - xz * sx) / det};
+    } else {
+        const Vec3 s{acc[0], acc[1], acc[2]};
+        const Real* a = acc + 3;
+        // inverse of the symmetric 3 x 3 by cofactors
+        const Real c00 = a[1] * a[2] - a[5] * a[5], c01 = a[4] * a[5] - a[3] * a[2],
+                   c02 = a[3] * a[5] - a[1] * a[4], c11 = a[0] * a[2] - a[4] * a[4],
+                   c12 = a[3] * a[4] - a[0] * a[5], c22 = a[0] * a[1] - a[3] * a[3];
+        const Real det = a[0] * c00 + a[3] * c01 + a[4] * c02;
         if (det <= renormalisation_min_det) return s;
-        return {(a[2] * s.x - a[4] * s.z) / det, 0, (a[0] * s.z - a[4] * s.x) / det};
+        return {(c00 * s.x + c01 * s.y + c02 * s.z) / det,
+                (c01 * s.x + c11 * s.y + c12 * s.z) / det,
+                (c02 * s.x + c12 * s.y + c22 * s.z) / det};
     }
-    // inverse of the symmetric 3 x 3 by cofactors
-    const Real c00 = a[1] * a[2] - a[5] * a[5], c01 = a[4] * a[5] - a[3] * a[2],
-               c02 = a[3] * a[5] - a[1] * a[4], c11 = a[0] * a[2] - a[4] * a[4],
-               c12 = a[3] * a[4] - a[0] * a[5], c22 = a[0] * a[1] - a[3] * a[3];
-    const Real det = a[0] * c00 + a[3] * c01 + a[4] * c02;
-    if (det <= renormalisation_min_det) return s;
-    return {(c00 * s.x + c01 * s.y + c02 * s.z) / det, (c01 * s.x + c11 * s.y + c12 * s.z) / det,
-            (c02 * s.x + c12 * s.y + c22 * s.z) / det};
 }
 
 // Gather form (one particle, its cell neighbours): the gather and resident paths. The host's
@@ -62,21 +78,23 @@ template <class Kernel> struct RenormalisedDensityGradient {
     int dim;
 
     DF_HD void operator()(Index i) const {
+        const Vec3 v = pv.is_fluid(i) ? (dim == 2 ? gather<2>(i) : gather<3>(i)) : Vec3{};
         Real* g = out + 3 * i;
-        g[0] = g[1] = g[2] = 0;
-        if (!pv.is_fluid(i)) return;
-        const Real rho_i = pv.rho[i];
-        Real acc[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-        grid.for_each_neighbor(i, pv.pos(i), pv.x, pv.y, pv.z, [&](Index j, Vec3 r, Real r2) {
-            if (!pv.is_fluid(j)) return;
-            add_density_gradient_pair(acc, pv.rho[j] - rho_i,
-                                      pv.mass[j] / pv.rho[j] * kernel.grad_over_r(std::sqrt(r2)),
-                                      r);
-        });
-        const Vec3 v = renormalised_gradient(acc, dim);
         g[0] = v.x;
         g[1] = v.y;
         g[2] = v.z;
+    }
+
+    template <int Dim> DF_HD Vec3 gather(Index i) const {
+        const Real rho_i = pv.rho[i];
+        Real acc[density_gradient_sums<Dim>] = {};
+        grid.for_each_neighbor(i, pv.pos(i), pv.x, pv.y, pv.z, [&](Index j, Vec3 r, Real r2) {
+            if (!pv.is_fluid(j)) return;
+            add_density_gradient_pair<Dim>(
+                acc, pv.rho[j] - rho_i, pv.mass[j] / pv.rho[j] * kernel.grad_over_r(std::sqrt(r2)),
+                r);
+        });
+        return renormalised_gradient<Dim>(acc);
     }
 };
 

@@ -25,6 +25,15 @@ struct GradientSide {
         return {pv.pos(i), pv.vel(i), vol[i], pv.is_fluid(i)};
     }
 };
+// Particle i's data for the density-gradient pair loop.
+struct DensitySide {
+    Vec3 x;
+    Real rho, vol;
+    bool fluid;
+    static DensitySide of(const particles::ParticleView& pv, const Real* vol, Index i) {
+        return {pv.pos(i), pv.rho[i], vol[i], pv.is_fluid(i)};
+    }
+};
 } // namespace
 
 SphSolver::SphSolver(const SphParams& params, particles::ParticleSet& set, const Domain& domain)
@@ -169,34 +178,40 @@ void SphSolver::update_density_gradient(bool pairs) {
     }
     // Half pair list: fluid pair (i, j) adds (rho_j - rho_i) V_j f r and -V_j f r (x) r to i,
     // and with r -> -r, rho_j - rho_i -> rho_i - rho_j the same products with V_i to j.
+    std::visit(
+        [&](const auto& kernel) {
+            if (params_.dim == 2)
+                density_gradient_over_pairs<2>(kernel);
+            else
+                density_gradient_over_pairs<3>(kernel);
+        },
+        models_.kernel);
+}
+
+template <int Dim, class K> void SphSolver::density_gradient_over_pairs(const K& kernel) {
     auto pv = set_.view();
     const auto gv = grid_.view();
     const Real support2 = support_ * support_;
     const Real* vol = vol_.data(); // m / rho, from update_pressure()
     Real* out = grad_rho_.data();
-    const int dim = params_.dim;
-    std::visit(
-        [&](const auto& kernel) {
-            exec::for_each_pair_w<9>(
-                list_, pv.n, buffers_, [=](Index i) { return GradientSide::of(pv, vol, i); },
-                [=](const GradientSide& a, Index i, Index j, Real* di, Real* dj) {
-                    if (!a.fluid || !pv.is_fluid(j)) return;
-                    const Vec3 r = gv.separation(a.x, pv.pos(j));
-                    const Real r2 = dot(r, r);
-                    if (r2 >= support2) return;
-                    const Real f = kernel.grad_over_r(std::sqrt(r2));
-                    const Real drho = pv.rho[j] - pv.rho[i];
-                    add_density_gradient_pair(di, drho, vol[j] * f, r);
-                    add_density_gradient_pair(dj, drho, vol[i] * f, r);
-                },
-                [=](Index i, const Real* acc) {
-                    const Vec3 g = pv.is_fluid(i) ? renormalised_gradient(acc, dim) : Vec3{};
-                    out[3 * i] = g.x;
-                    out[3 * i + 1] = g.y;
-                    out[3 * i + 2] = g.z;
-                });
+    exec::for_each_pair_w<density_gradient_sums<Dim>>(
+        list_, pv.n, buffers_, [=](Index i) { return DensitySide::of(pv, vol, i); },
+        [=](const DensitySide& a, Index, Index j, Real* di, Real* dj) {
+            if (!a.fluid || !pv.is_fluid(j)) return;
+            const Vec3 r = gv.separation(a.x, pv.pos(j));
+            const Real r2 = dot(r, r);
+            if (r2 >= support2) return;
+            const Real f = kernel.grad_over_r(std::sqrt(r2));
+            const Real drho = pv.rho[j] - a.rho;
+            add_density_gradient_pair<Dim>(di, drho, vol[j] * f, r);
+            add_density_gradient_pair<Dim>(dj, drho, a.vol * f, r);
         },
-        models_.kernel);
+        [=](Index i, const Real* acc) {
+            const Vec3 g = pv.is_fluid(i) ? renormalised_gradient<Dim>(acc) : Vec3{};
+            out[3 * i] = g.x;
+            out[3 * i + 1] = g.y;
+            out[3 * i + 2] = g.z;
+        });
 }
 
 Real SphSolver::max_kinematic_viscosity() const {

@@ -112,6 +112,8 @@ private:
     // list (`pairs`) or by a gather over the cell grid (diffusion models with
     // needs_density_gradient).
     void update_density_gradient(bool pairs);
+    // The half list's pass of update_density_gradient, with 5 sums per particle in 2D, 9 in 3D.
+    template <int Dim, class K> void density_gradient_over_pairs(const K& kernel);
     // Largest kinematic viscosity now (the viscous time-step limit).
     Real max_kinematic_viscosity() const;
     // Updates pressures (and SPS stresses) and calls f(PairTerms<K, V, D>) for the case's models.
