@@ -13,6 +13,7 @@ namespace debrisflow::sph {
 // whose particles are left out: their density is the wall treatment's, not the fluid's).
 // Where the matrix is nearly singular (a particle with few fluid neighbours: spray, a sheet
 // one particle thick) the plain sum is kept.
+
 // det(L^-1) below which the plain sum is kept: a flat free surface gives about 0.5^dim.
 inline constexpr Real renormalisation_min_det = Real(0.01);
 
