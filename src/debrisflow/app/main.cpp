@@ -44,9 +44,10 @@ int check(const std::string& file, const std::vector<std::string>& sets) {
     if (sim.has_fluid()) {
         const auto d = sim.solver().initial_dt();
         std::cout << fmt::format(
-            "sph: dp = {} m, kernel {}, h = {:.4g} m, c0 = {:.4g} m/s, "
+            "sph: dp = {} m, kernel {}, h = {:.4g} m, c0 = {:.4g} m/s, diffusion {}, "
             "walls {}, pairs {}; initial dt {:.4g} s ({})\n",
-            spec.dp, spec.sph.kernel, spec.sph.h, spec.sph.c0, sph::wall_words(spec.sph),
+            spec.dp, spec.sph.kernel, spec.sph.h, spec.sph.c0, spec.sph.diffusion,
+            sph::wall_words(spec.sph),
             spec.backend == "host" ? sph::pair_loop_words(spec.sph) : "gathered over cells", d.dt,
             d.limiter);
         std::cout << fmt::format(

@@ -144,8 +144,9 @@ probes::Probe& Simulation::probe(const std::string& name) {
 std::size_t Simulation::memory_bytes() const {
     const double grains = double(grains_.size()) * scenario::bytes_per_grain(spec_);
     if (!solver_) return std::size_t(grains);
-    const double particle =
-        scenario::sph_bytes_per_particle(spec_.dim, solver_->support() / spec_.dp);
+    const double particle = scenario::sph_bytes_per_particle(
+        spec_.dim, solver_->support() / spec_.dp,
+        sph::diffusion_needs_density_gradient(spec_.sph.diffusion));
     return std::size_t(grains + double(set_.size()) * particle);
 }
 

@@ -2,6 +2,7 @@
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/core/memory_budget.hpp"
 #include "debrisflow/io/named.hpp"
+#include "debrisflow/sph/sph_models.hpp"
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -92,7 +93,7 @@ double delivered(const std::vector<Real>& times, const std::vector<Real>& q, dou
 
 } // namespace
 
-double sph_bytes_per_particle(int dim, double support_over_dp) {
+double sph_bytes_per_particle(int dim, double support_over_dp, bool density_gradient) {
     // Particle fields (21 Real + kind + group + id), doubled while reordering; integrator
     // copies (7 Real); grid arrays; half pair list: half the neighbours within support + skin
     // (1.1 support) plus 25 % capacity slack, 4 bytes each.
@@ -100,8 +101,12 @@ double sph_bytes_per_particle(int dim, double support_over_dp) {
     const double neighbours =
         dim == 3 ? 4.0 / 3.0 * pi * reach * reach * reach : pi * reach * reach;
     const double list = std::floor(0.5 * neighbours * 1.25) * 4;
+    // the density gradients (3 Real) and their pass's buffers: 5 (2D) or 9 (3D) Real per
+    // particle and thread instead of the force pass's 4
+    const double gradient =
+        density_gradient ? 3 * sizeof(Real) + (dim == 3 ? 5 : 1) * sizeof(Real) * 2 : 0;
     return 2 * (21 * sizeof(Real) + 1 + 2 + 8) + 7 * sizeof(Real) + 3 * 4 + list +
-           4 * sizeof(Real) * 2;
+           4 * sizeof(Real) * 2 + gradient;
 }
 
 double bytes_per_grain(const io::CaseSpec& c) {
@@ -133,7 +138,10 @@ ResourceEstimate estimate_resources(const io::CaseSpec& c) {
     ResourceEstimate e;
     const bool fluid = !c.fluids.empty();
     const double dp = c.dp;
-    const double per_particle = fluid ? sph_bytes_per_particle(c.dim, 2 * c.sph.h / dp) : 0;
+    const double per_particle =
+        fluid ? sph_bytes_per_particle(c.dim, 2 * c.sph.h / dp,
+                                       sph::diffusion_needs_density_gradient(c.sph.diffusion))
+              : 0;
     auto add = [&](std::string what, std::string where, double count, double bytes_each) {
         e.items.push_back({std::move(what), std::move(where), count, count * bytes_each});
     };

@@ -30,7 +30,9 @@ void require_within_budget(const ResourceEstimate& e);
 // of one grain (state and about 12 contact slots with history, and with the device contact
 // layout their results); Simulation::memory_bytes uses
 // the same figures.
-double sph_bytes_per_particle(int dim, double support_over_dp);
+// With `density_gradient` (a diffusion model that reads renormalised density gradients) also
+// their 3 reals per particle and the wider scatter buffers of their pair pass.
+double sph_bytes_per_particle(int dim, double support_over_dp, bool density_gradient = false);
 double bytes_per_grain(const io::CaseSpec& c);
 
 // Guard of every lattice built from input sizes: throws InputError naming `what` when the

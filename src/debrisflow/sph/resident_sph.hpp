@@ -115,8 +115,8 @@ public:
                 auto terms = host_.pair_terms(pv, kernel, visc, diff, nullptr, nullptr, nullptr,
                                               sps_ ? tau_.data() : nullptr);
                 terms.wall = wall;
-                using K = std::decay_t<decltype(kernel)>;
                 if constexpr (std::decay_t<decltype(diff)>::needs_density_gradient) {
+                    using K = std::decay_t<decltype(kernel)>;
                     grad_rho_.resize(3 * n_); // scratch of this evaluation
                     Space::for_each(n_, RenormalisedDensityGradient<K>{pv, grid_, kernel,
                                                                        grad_rho_.data(), p.dim});

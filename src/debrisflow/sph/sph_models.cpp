@@ -12,4 +12,8 @@ SphModels SphModels::from_params(const SphParams& p) {
     return m;
 }
 
+bool diffusion_needs_density_gradient(const std::string& name) {
+    return DiffusionRegistry::visit_name(name, []<class D>() { return D::needs_density_gradient; });
+}
+
 } // namespace debrisflow::sph

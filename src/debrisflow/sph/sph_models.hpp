@@ -20,4 +20,8 @@ struct SphModels {
     static SphModels from_params(const SphParams& p);
 };
 
+// Whether the diffusion model of that name reads renormalised density gradients (one more pass
+// over the pairs and 3 reals per particle; the memory estimate counts them).
+bool diffusion_needs_density_gradient(const std::string& name);
+
 } // namespace debrisflow::sph
