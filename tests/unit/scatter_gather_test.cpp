@@ -7,8 +7,9 @@ using namespace debrisflow;
 
 namespace {
 
-void compare(const std::vector<std::string>& sets) {
-    auto spec = io::read_case(std::string(DEBRISFLOW_SOURCE_DIR) + "/cases/dambreak2d.toml", sets);
+void compare(const std::vector<std::string>& sets,
+             const std::string& file = "cases/dambreak2d.toml") {
+    auto spec = io::read_case(std::string(DEBRISFLOW_SOURCE_DIR) + "/" + file, sets);
     app::Simulation sim(spec);
     auto& solver = sim.solver();
     auto& s = sim.particles();
@@ -58,6 +59,10 @@ TEST(ScatterGather, LaminarMolteni) {
 // its pairs (SphSolver::update_density_gradient), the gather over cells.
 TEST(ScatterGather, ArtificialAntuono) {
     compare({"sph.diffusion=\"antuono\""});
+}
+// the same in 3D (the half list's 9 sums per particle)
+TEST(ScatterGather, ArtificialAntuono3D) {
+    compare({"sph.diffusion=\"antuono\"", "dp=0.034"}, "cases/bench/dambreak3d.toml");
 }
 TEST(ScatterGather, SpsCubic) {
     compare({"sph.viscosity=\"laminar_sps\"", "sph.nu=1e-6", "sph.kernel=\"cubic_spline\""});
