@@ -44,13 +44,13 @@ double mean_between(const test::Curve& c, double a, double b) {
     return s / n;
 }
 
-// The demo case (cases/dambreak2d.toml) at dp = 6 mm to T = 6.1, sensors 1-4 sampled every
-// 0.5 ms: each sensor's p/(rho g H) against T.
-std::vector<test::Curve> run_sensors() {
+// The demo case (cases/dambreak2d.toml) at dp = 6 mm (or the given dp) to T = 6.1, sensors 1-4
+// sampled every 0.5 ms: each sensor's p/(rho g H) against T.
+std::vector<test::Curve> run_sensors(const char* dp = "0.006") {
     const double t_scale = std::sqrt(H / g);
     app::Simulation sim(
         io::read_case(std::string(DEBRISFLOW_SOURCE_DIR) + "/cases/dambreak2d.toml",
-                      {"dp=0.006", fmt::format("time.end={}", 6.1 * t_scale),
+                      {fmt::format("dp={}", dp), fmt::format("time.end={}", 6.1 * t_scale),
                        "probe.0.every=0.0005", "probe.1.every=0.0005", "probe.2.every=0.0005",
                        "probe.3.every=0.0005", "output.vtk=false"}));
     sim.run({"", true, 0});
@@ -228,42 +228,67 @@ TEST(DamBreakLobovskyKnownGap, UpperSensorsArrivalAndSensor4Plateau) {
     EXPECT_NEAR(p4, p4_exp, 0.15 * p4_exp);
 }
 
+// Known gap (docs/validation.md, "Under refinement"): with DBC walls sensor 1's plateau moves
+// away from the experiment as dp falls (+13 % at the suite's dp = 6 mm, +29 % at 4 mm, +36 % at
+// 3 mm over 3 <= T <= 5.7; mDBC +5 and +4 %), so the plateau check above holds at dp = 6 mm only.
+// Same quantity and tolerance as that check (mean over 3 <= T <= 6, 15 %), at dp = 4 mm.
+TEST(DamBreakLobovskyKnownGap, Sensor1PlateauAtDp4mmDbc) {
+    const std::vector<test::Curve> sim = run_sensors("0.004");
+    const test::Curve exp1 = experiment("pysph_lobovsky_p1_y3mm.csv");
+    const double p_sim = mean_between(sim[0], 3, 6), p_exp = mean_between(exp1, 3, 6);
+    std::cout << fmt::format("Lobovsky sensor 1 plateau at dp = 4 mm: {:.3f} (experiment {:.3f}, "
+                             "{:+.1f} %)\n",
+                             p_sim, p_exp, 100 * (p_sim - p_exp) / p_exp);
+    // Source: Lobovsky et al. 2014 (PySPH's digitised curve); tolerance 15 % (issue #2).
+    EXPECT_NEAR(p_sim, p_exp, 0.15 * p_exp);
+}
+
 // The impact load that a structure slower than the ringing responds to (docs/validation.md,
-// "The impact peak is acoustic"): the peak of sensor 1's 50 ms moving mean, sampled at 20 kHz,
-// against the same quantity of the Fig. 18 event (1.94). Run at c0 = 10 and 20 sqrt(g H) at
-// dp = 6 mm and at c0 = 10 sqrt(g H) at dp = 7.5 mm: the window spans seven or more periods of
-// the acoustic ringing, whose impulse rho c0 u x L/c0 does not depend on c0, so the mean must
-// neither follow c0 nor drift with dp (the instantaneous peaks, 10.5-21.3, are 3.5-7 times the
+// "The impact peak is acoustic"): the peak of the 50 ms moving mean at sensors 1 and 2 (3 and
+// 15 mm up the wall, where the surge stagnates), sampled at 20 kHz, against the same quantity
+// of the Fig. 18 events (1.94 and 1.72). Run at c0 = 10 and 20 sqrt(g H) at dp = 6 mm and at
+// c0 = 10 sqrt(g H) at dp = 7.5 mm: the window spans seven or more periods of the acoustic
+// ringing, whose impulse rho c0 u x L/c0 does not depend on c0, so the mean must neither follow
+// c0 nor drift with dp (the instantaneous peaks, 10.5-21.3 at sensor 1, are 3.5-7 times the
 // event's 3.04 and move with both).
 // Tolerance: the event +-25 %, the band of the peak test below (one event, no scatter band).
-TEST(DamBreakLobovsky, Sensor1LoadOver50msFollowsTheFlowNotC0) {
+TEST(DamBreakLobovsky, FootOfWallLoadOver50msFollowsTheFlowNotC0) {
     const double t_scale = std::sqrt(H / g);
-    std::vector<Real> t, p;
-    experiment_event(t, p);
-    const double event = probes::peak_moving_mean(t, p, 0.05);
+    double event[2];
+    for (int s = 0; s < 2; ++s) {
+        std::vector<Real> t, p;
+        experiment_event(
+            t, p, s == 0 ? "Fig18_peak_event_5_sensors_5.dat" : "Fig18_peak_event_5_sensors_4.dat");
+        event[s] = probes::peak_moving_mean(t, p, 0.05);
+    }
     for (const auto& [dp, c0] :
          {std::pair{"0.006", "10"}, std::pair{"0.006", "20"}, std::pair{"0.0075", "10"}}) {
-        app::Simulation sim(
-            io::read_case(std::string(DEBRISFLOW_SOURCE_DIR) + "/cases/dambreak2d.toml",
-                          {fmt::format("dp={}", dp), fmt::format("sph.c0_coefficient={}", c0),
-                           "time.end=0.6", "probe.0.every=0.00005", "output.vtk=false"}));
+        app::Simulation sim(io::read_case(
+            std::string(DEBRISFLOW_SOURCE_DIR) + "/cases/dambreak2d.toml",
+            {fmt::format("dp={}", dp), fmt::format("sph.c0_coefficient={}", c0), "time.end=0.6",
+             "probe.0.every=0.00005", "probe.1.every=0.00005", "output.vtk=false"}));
         sim.run({"", true, 0});
-        const auto& probe = sim.probe("sensor1");
-        const double peak = probe.peaks()[0] / (rho0 * g * H);
-        const double mean50 = probe.peak_window_mean(0, 0.05) / (rho0 * g * H);
-        std::cout << fmt::format("Lobovsky sensor 1, dp = {} m, c0 = {} sqrt(gH): peak {:.2f} at "
-                                 "T = {:.3f}; 50 ms mean {:.2f} (event {:.2f}, {:+.1f} %)\n",
-                                 dp, c0, peak, probe.peak_time(0) / t_scale, mean50, event,
-                                 100 * (mean50 - event) / event);
-        // Source: Lobovsky et al. 2014, Fig. 18 event; tolerance 25 % (stated above).
-        EXPECT_NEAR(mean50, event, 0.25 * event) << "dp = " << dp << ", c0 = " << c0;
+        for (int s = 0; s < 2; ++s) {
+            const auto& probe = sim.probe(s == 0 ? "sensor1" : "sensor2");
+            const double peak = probe.peaks()[0] / (rho0 * g * H);
+            const double mean50 = probe.peak_window_mean(0, 0.05) / (rho0 * g * H);
+            std::cout << fmt::format("Lobovsky sensor {}, dp = {} m, c0 = {} sqrt(gH): peak {:.2f} "
+                                     "at T = {:.3f}; 50 ms mean {:.2f} (event {:.2f}, {:+.1f} %)\n",
+                                     s + 1, dp, c0, peak, probe.peak_time(0) / t_scale, mean50,
+                                     event[s], 100 * (mean50 - event[s]) / event[s]);
+            // Source: Lobovsky et al. 2014, Fig. 18 events; tolerance 25 % (stated above).
+            EXPECT_NEAR(mean50, event[s], 0.25 * event[s])
+                << "sensor " << s + 1 << ", dp = " << dp << ", c0 = " << c0;
+        }
     }
 }
 
 // Known gap (docs/validation.md, "Up the wall it does not hold"): the impact load over 50 ms
-// 30 and 80 mm up the wall (sensors 3 and 4, sampled at 2 kHz) against the Fig. 18 events
-// (1.49 and 0.72), tolerance +-25 % as sensor 1's. Measured at dp = 6 mm, c0 = 10 sqrt(g H),
-// DBC: 0.69 (-54 %) and 0.19 (-74 %): the run-up sheet rises off the wall.
+// 30 and 80 mm up the wall (sensors 3 and 4, sampled at 2 kHz) against the Fig. 18 events over
+// the same span, t <= 0.6 s (1.49 and 0.53; sensor 4's event peaks later, 0.72 at T = 6.1, when
+// the overturned run-up falls back, which a run to 0.6 s cannot see), tolerance +-25 % as
+// sensor 1's. Measured at dp = 6 mm, c0 = 10 sqrt(g H), DBC: 0.69 (-54 %) and 0.19 (-64 %);
+// at dp = 3 mm -24 % and -59 %: the run-up sheet rises off the wall.
 TEST(DamBreakLobovskyKnownGap, UpperSensorsLoadOver50ms) {
     app::Simulation sim(io::read_case(std::string(DEBRISFLOW_SOURCE_DIR) + "/cases/dambreak2d.toml",
                                       {"dp=0.006", "time.end=0.6", "probe.2.every=0.0005",
@@ -273,6 +298,9 @@ TEST(DamBreakLobovskyKnownGap, UpperSensorsLoadOver50ms) {
                                      std::pair{"sensor4", "Fig18_peak_event_5_sensors_1.dat"}}) {
         std::vector<Real> t, p;
         experiment_event(t, p, file);
+        // the event over the run's span only
+        const auto end = std::upper_bound(t.begin(), t.end(), Real(0.6)) - t.begin();
+        t.resize(std::size_t(end)), p.resize(std::size_t(end));
         const double event = probes::peak_moving_mean(t, p, 0.05);
         const double mean50 = sim.probe(name).peak_window_mean(0, 0.05) / (rho0 * g * H);
         std::cout << fmt::format("Lobovsky {}: 50 ms mean {:.2f} (event {:.2f}, {:+.1f} %)\n", name,
