@@ -79,3 +79,79 @@ TEST(DemRepose, DiscInAPocketLeavesAtTheClosedFormAngle) {
         EXPECT_LE(beta, critical + 1) << c.rolling << " mu_r " << c.mu_roll;
     }
 }
+
+// The next heap up: three equal discs, two touching on a floor and one resting on both. Closed
+// form (statics; each bottom disc carries the top one's contact force N along the line of
+// centres, 30 deg from the vertical, and a tangential F, the floor N_f and f, no force between
+// the bottom discs): the top disc's weight W gives N cos30 - F sin30 = W/2 and N_f = 3W/2; the
+// moment about a bottom disc's centre, R f - R F + M = 0, with M the rolling moments of its two
+// contacts; its horizontal balance, N sin30 + F cos30 + f = 0.
+// - Without rolling resistance (M = 0): f = F, so F/N = tan 15 deg = 2 - sqrt(3) = 0.268 and
+//   f/N_f = tan 15 deg / 3 = 0.0893: the pyramid stands if and only if mu between the discs is at
+//   least 0.268 and mu on the floor at least 0.0893.
+// - With rolling resistance (EPSD, |M| <= mu_r R* F_n; R* = R/2 between discs, R on the floor)
+//   and sliding at the discs' contact (F = -mu N): it stands only if
+//   sin30 - mu (1 + cos30) <= mu_r (1/2 + 3 cos30 + 3 mu sin30), i.e. mu_r >= 0.0965 for
+//   mu = 0.1 (which alone would not hold it) and mu_r >= 0.161 for mu = 0, and the floor must
+//   hold f: mu_f >= 0.150 for mu = 0.1, 0.192 for mu = 0. Below the bound no equilibrium
+//   exists, so the pyramid must collapse; above it one exists, which the elastic-plastic springs
+//   must find (friction is not associated, so that half is not a theorem; it holds here).
+namespace {
+
+// How far the top disc's centre has fallen [m] after 0.5 s, gravity on at t = 0.
+Real pyramid_drop(Real mu_discs, Real mu_floor, Real mu_roll) {
+    const Real r = 0.005, thickness = 0.005, rho = 2500;
+    dem::Material disc;
+    disc.name = "disc";
+    disc.density = rho;
+    disc.kn = disc.kt = 1e5;
+    disc.restitution = 0.3;
+    disc.friction = mu_discs;
+    disc.rolling_friction = mu_roll;
+    dem::Material floor = disc;
+    floor.name = "floor";
+    dem::PairOverride on_floor;
+    on_floor.a = "disc", on_floor.b = "floor";
+    on_floor.friction = mu_floor;
+    on_floor.rolling_friction = mu_roll;
+    DemRig rig;
+    const Real mass = rho * pi * r * r * thickness;
+    for (Real x : {-r, r}) rig.grains.add({x, 0, r}, {}, r, mass, 0.5 * mass * r * r, 0);
+    const Vec3 top{0, 0, r + std::sqrt(3.0) * r};
+    rig.grains.add(top, {}, r, mass, 0.5 * mass * r * r, 0);
+    rig.add_plane("floor", {0, 0, 0}, {0, 0, 1}, 1);
+    dem::DemParams p;
+    p.dim = 2;
+    p.rolling = mu_roll > 0 ? "epsd" : "none";
+    p.reorder = false; // grain 2 stays the top disc
+    p.safety = 0.05;
+    rig.start(p, {disc, floor}, {-0.1, 0, -0.01}, {0.1, 0, 0.1}, {on_floor});
+    for (Real t = 0; t < 0.5; t += rig.solver->dt()) rig.solver->advance(rig.solver->dt());
+    return top.z - rig.grains.pos[2].z;
+}
+
+} // namespace
+
+// Each threshold approached from both sides: within 3-5 % without rolling resistance, 7-12 %
+// with it (the pyramid at mu_r 0.105 stands and at 0.09 collapses, the bound 0.0965; between
+// frictionless discs, mu = 0, the bound is 0.161): "stands" is a fall below 0.01 R (the
+// contacts' elastic overlap is ~2e-5 R), "collapses" a fall beyond 0.2 R within 0.5 s.
+TEST(DemRepose, ThreeDiscPyramidStandsAtTheClosedFormFriction) {
+    const Real r = 0.005;
+    struct Case {
+        Real mu_discs, mu_floor, mu_roll;
+        bool stands;
+    };
+    for (const Case c :
+         {Case{0.28, 0.5, 0, true}, Case{0.26, 0.5, 0, false}, Case{0.5, 0.093, 0, true},
+          Case{0.5, 0.086, 0, false}, Case{0.1, 0.5, 0.105, true}, Case{0.1, 0.5, 0.09, false},
+          Case{0.0, 0.5, 0.18, true}, Case{0.0, 0.5, 0.15, false}}) {
+        const Real drop = pyramid_drop(c.mu_discs, c.mu_floor, c.mu_roll);
+        std::printf("mu discs %.3g, floor %.3g, mu_r %.3g: top disc fell %.3g R (%s)\n", c.mu_discs,
+                    c.mu_floor, c.mu_roll, drop / r, c.stands ? "stands" : "collapses");
+        if (c.stands)
+            EXPECT_LT(drop, 0.01 * r) << c.mu_discs << " " << c.mu_floor << " " << c.mu_roll;
+        else
+            EXPECT_GT(drop, 0.2 * r) << c.mu_discs << " " << c.mu_floor << " " << c.mu_roll;
+    }
+}

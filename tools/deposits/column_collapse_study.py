@@ -36,6 +36,7 @@ D50 = 0.005
 
 MODELS = {
     "discs, no rolling resistance": ("column_collapse2d.toml", ['dem.rolling="none"']),
+    "discs, EPSD mu_r = 0.05": ("column_collapse2d.toml", ["material.0.rolling_friction=0.05"]),
     "discs, EPSD mu_r = 0.1": ("column_collapse2d.toml", ["material.0.rolling_friction=0.1"]),
     "discs, EPSD mu_r = 0.2": ("column_collapse2d.toml", []),
     "two-disc clumps, no rolling resistance": ("column_collapse2d_clumps.toml", []),
