@@ -11,6 +11,7 @@
 #include "dem_rig.hpp"
 #include <cmath>
 #include <cstdio>
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 using namespace debrisflow;
@@ -80,78 +81,113 @@ TEST(DemRepose, DiscInAPocketLeavesAtTheClosedFormAngle) {
     }
 }
 
-// The next heap up: three equal discs, two touching on a floor and one resting on both. Closed
-// form (statics; each bottom disc carries the top one's contact force N along the line of
-// centres, 30 deg from the vertical, and a tangential F, the floor N_f and f, no force between
-// the bottom discs): the top disc's weight W gives N cos30 - F sin30 = W/2 and N_f = 3W/2; the
-// moment about a bottom disc's centre, R f - R F + M = 0, with M the rolling moments of its two
-// contacts; its horizontal balance, N sin30 + F cos30 + f = 0.
-// - Without rolling resistance (M = 0): f = F, so F/N = tan 15 deg = 2 - sqrt(3) = 0.268 and
-//   f/N_f = tan 15 deg / 3 = 0.0893: the pyramid stands if and only if mu between the discs is at
-//   least 0.268 and mu on the floor at least 0.0893.
-// - With rolling resistance (EPSD, |M| <= mu_r R* F_n; R* = R/2 between discs, R on the floor)
-//   and sliding at the discs' contact (F = -mu N): it stands only if
-//   sin30 - mu (1 + cos30) <= mu_r (1/2 + 3 cos30 + 3 mu sin30), i.e. mu_r >= 0.0965 for
-//   mu = 0.1 (which alone would not hold it) and mu_r >= 0.161 for mu = 0, and the floor must
-//   hold f: mu_f >= 0.150 for mu = 0.1, 0.192 for mu = 0. Below the bound no equilibrium
-//   exists, so the pyramid must collapse; above it one exists, which the elastic-plastic springs
-//   must find (friction is not associated, so that half is not a theorem; it holds here).
+// The next heap up: three equal discs, two touching on a floor and one resting on both (in 3D
+// four spheres, three touching on the floor and one on top). Closed form (statics; each of the
+// k bottom grains (k = 2 discs, 3 spheres) carries the top one's contact force N along the line
+// of centres, beta from the vertical (30 deg for discs, asin(1/sqrt(3)) = 35.26 deg for spheres),
+// and a tangential F, the floor N_f and f, no force between the bottom grains): the top grain's
+// weight W gives N cos(beta) - F sin(beta) = W/k and N_f = (k + 1) W/k; the moment about a
+// bottom grain's centre, R f - R F + M = 0, with M the rolling moments of its two contacts; its
+// horizontal balance, N sin(beta) + F cos(beta) + f = 0.
+// - Without rolling resistance (M = 0): f = F, so F/N = tan(beta/2) and f/N_f =
+//   tan(beta/2)/(k + 1): the pyramid stands if and only if mu between the grains is at least
+//   tan(beta/2) (discs 0.268, spheres 0.318) and mu on the floor at least tan(beta/2)/(k + 1)
+//   (0.0893, 0.0795).
+// - With rolling resistance (EPSD, |M| <= mu_r R* F_n; R* = R/2 between grains, R on the
+//   floor) and sliding between the grains (F = -mu N, s = -mu): it stands only if
+//   sin(beta) + s (1 + cos(beta)) <= mu_r (1/2 + (k + 1)(cos(beta) - s sin(beta))), and the
+//   floor holds f: |sin(beta) + s cos(beta)| <= (k + 1) mu_f (cos(beta) - s sin(beta)).
+//   Below the bound no equilibrium exists, so the pyramid must collapse; above it one exists,
+//   which the elastic-plastic springs must find (friction is not associated, so that half is
+//   not a theorem; it holds here).
 namespace {
 
-// How far the top disc's centre has fallen [m] after 0.5 s, gravity on at t = 0.
-Real pyramid_drop(Real mu_discs, Real mu_floor, Real mu_roll) {
+struct Pyramid {
+    int dim;
+    Real beta() const { return dim == 2 ? pi / 6 : std::asin(1 / std::sqrt(3.0)); }
+    int bottom() const { return dim == 2 ? 2 : 3; }
+    Real mu_grains() const { return std::tan(beta() / 2); }
+    Real mu_floor() const { return mu_grains() / (bottom() + 1); }
+    // the least mu_r with sliding friction mu between the grains
+    Real mu_roll(Real mu) const {
+        const Real sb = std::sin(beta()), cb = std::cos(beta());
+        return (sb - mu * (1 + cb)) / (Real(0.5) + (bottom() + 1) * (cb + mu * sb));
+    }
+};
+
+// How far the top grain's centre has fallen [m] after 0.5 s, gravity on at t = 0.
+Real pyramid_drop(const Pyramid& pyr, Real mu_grains, Real mu_floor, Real mu_roll) {
     const Real r = 0.005, thickness = 0.005, rho = 2500;
-    dem::Material disc;
-    disc.name = "disc";
-    disc.density = rho;
-    disc.kn = disc.kt = 1e5;
-    disc.restitution = 0.3;
-    disc.friction = mu_discs;
-    disc.rolling_friction = mu_roll;
-    dem::Material floor = disc;
+    dem::Material grain;
+    grain.name = "grain";
+    grain.density = rho;
+    grain.kn = grain.kt = 1e5;
+    grain.restitution = 0.3;
+    grain.friction = mu_grains;
+    grain.rolling_friction = mu_roll;
+    dem::Material floor = grain;
     floor.name = "floor";
     dem::PairOverride on_floor;
-    on_floor.a = "disc", on_floor.b = "floor";
+    on_floor.a = "grain", on_floor.b = "floor";
     on_floor.friction = mu_floor;
     on_floor.rolling_friction = mu_roll;
     DemRig rig;
-    const Real mass = rho * pi * r * r * thickness;
-    for (Real x : {-r, r}) rig.grains.add({x, 0, r}, {}, r, mass, 0.5 * mass * r * r, 0);
-    const Vec3 top{0, 0, r + std::sqrt(3.0) * r};
-    rig.grains.add(top, {}, r, mass, 0.5 * mass * r * r, 0);
+    // a disc of the quasi-2D layer (thickness `thickness`) or a sphere, at rest at x
+    const auto add_grain = [&](Vec3 x) {
+        if (pyr.dim == 3) return rig.add_sphere(x, {}, r, rho, 0);
+        const Real mass = rho * pi * r * r * thickness;
+        return rig.grains.add(x, {}, r, mass, 0.5 * mass * r * r, 0);
+    };
+    const Real base = r / std::sin(pi / Real(pyr.bottom())); // bottom centres from the axis
+    for (int b = 0; b < pyr.bottom(); ++b) {
+        const Real a = 2 * pi * b / pyr.bottom();
+        add_grain({base * std::cos(a), pyr.dim == 2 ? 0 : base * std::sin(a), r});
+    }
+    const Vec3 top{0, 0, r + std::sqrt(4 * r * r - base * base)};
+    add_grain(top);
     rig.add_plane("floor", {0, 0, 0}, {0, 0, 1}, 1);
     dem::DemParams p;
-    p.dim = 2;
+    p.dim = pyr.dim;
     p.rolling = mu_roll > 0 ? "epsd" : "none";
-    p.reorder = false; // grain 2 stays the top disc
+    p.reorder = false; // the last grain stays the top one
     p.safety = 0.05;
-    rig.start(p, {disc, floor}, {-0.1, 0, -0.01}, {0.1, 0, 0.1}, {on_floor});
+    rig.start(p, {grain, floor}, {-0.1, pyr.dim == 2 ? 0 : -0.1, -0.01},
+              {0.1, pyr.dim == 2 ? 0 : 0.1, 0.1}, {on_floor});
     for (Real t = 0; t < 0.5; t += rig.solver->dt()) rig.solver->advance(rig.solver->dt());
-    return top.z - rig.grains.pos[2].z;
+    return top.z - rig.grains.pos[std::size_t(pyr.bottom())].z;
 }
 
 } // namespace
 
-// Each threshold approached from both sides: within 3-5 % without rolling resistance, 7-12 %
-// with it (the pyramid at mu_r 0.105 stands and at 0.09 collapses, the bound 0.0965; between
-// frictionless discs, mu = 0, the bound is 0.161): "stands" is a fall below 0.01 R (the
-// contacts' elastic overlap is ~2e-5 R), "collapses" a fall beyond 0.2 R within 0.5 s.
-TEST(DemRepose, ThreeDiscPyramidStandsAtTheClosedFormFriction) {
+// Each threshold approached from both sides: 4 % above (stands) and below (collapses) without
+// rolling resistance, 10 % above and 7 % below with it: "stands" is a fall of the top grain
+// below 0.01 R in 0.5 s (the contacts' elastic overlap is ~2e-5 R), "collapses" beyond 0.2 R.
+TEST(DemRepose, PyramidOfThreeDiscsOrFourSpheresStandsAtTheClosedFormFriction) {
     const Real r = 0.005;
-    struct Case {
-        Real mu_discs, mu_floor, mu_roll;
-        bool stands;
-    };
-    for (const Case c :
-         {Case{0.28, 0.5, 0, true}, Case{0.26, 0.5, 0, false}, Case{0.5, 0.093, 0, true},
-          Case{0.5, 0.086, 0, false}, Case{0.1, 0.5, 0.105, true}, Case{0.1, 0.5, 0.09, false},
-          Case{0.0, 0.5, 0.18, true}, Case{0.0, 0.5, 0.15, false}}) {
-        const Real drop = pyramid_drop(c.mu_discs, c.mu_floor, c.mu_roll);
-        std::printf("mu discs %.3g, floor %.3g, mu_r %.3g: top disc fell %.3g R (%s)\n", c.mu_discs,
-                    c.mu_floor, c.mu_roll, drop / r, c.stands ? "stands" : "collapses");
-        if (c.stands)
-            EXPECT_LT(drop, 0.01 * r) << c.mu_discs << " " << c.mu_floor << " " << c.mu_roll;
-        else
-            EXPECT_GT(drop, 0.2 * r) << c.mu_discs << " " << c.mu_floor << " " << c.mu_roll;
+    for (const int dim : {2, 3}) {
+        const Pyramid pyr{dim};
+        struct Case {
+            Real mu_grains, mu_floor, mu_roll;
+            bool stands;
+        };
+        const Real mu = pyr.mu_grains(), muf = pyr.mu_floor();
+        const Real mr1 = pyr.mu_roll(0.1), mr0 = pyr.mu_roll(0);
+        std::printf("%dD: closed form mu %.4f, floor %.4f, mu_r %.4f (mu = 0.1), %.4f (mu = 0)\n",
+                    dim, mu, muf, mr1, mr0);
+        for (const Case c : {Case{1.04 * mu, 0.5, 0, true}, Case{0.96 * mu, 0.5, 0, false},
+                             Case{0.5, 1.04 * muf, 0, true}, Case{0.5, 0.96 * muf, 0, false},
+                             Case{0.1, 0.5, 1.10 * mr1, true}, Case{0.1, 0.5, 0.93 * mr1, false},
+                             Case{0, 0.5, 1.10 * mr0, true}, Case{0, 0.5, 0.93 * mr0, false}}) {
+            const Real drop = pyramid_drop(pyr, c.mu_grains, c.mu_floor, c.mu_roll);
+            std::printf("%dD mu %.4f, floor %.4f, mu_r %.4f: top grain fell %.3g R (%s)\n", dim,
+                        c.mu_grains, c.mu_floor, c.mu_roll, drop / r,
+                        c.stands ? "stands" : "collapses");
+            const auto what =
+                fmt::format("{}D mu {} floor {} mu_r {}", dim, c.mu_grains, c.mu_floor, c.mu_roll);
+            if (c.stands)
+                EXPECT_LT(drop, 0.01 * r) << what;
+            else
+                EXPECT_GT(drop, 0.2 * r) << what;
+        }
     }
 }
