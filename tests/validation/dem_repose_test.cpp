@@ -9,6 +9,7 @@
 // (rolling, not sliding). The same heap of two-sphere clumps is not built here: grains are
 // spheres (discs in 2D) only.
 #include "dem_rig.hpp"
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fmt/format.h>
@@ -113,6 +114,11 @@ struct Pyramid {
         const Real sb = std::sin(beta()), cb = std::cos(beta());
         return (sb - mu * (1 + cb)) / (Real(0.5) + (bottom() + 1) * (cb + mu * sb));
     }
+    // the floor friction that state needs
+    Real mu_floor_rolling(Real mu) const {
+        const Real sb = std::sin(beta()), cb = std::cos(beta());
+        return std::abs(sb - mu * cb) / ((bottom() + 1) * (cb + mu * sb));
+    }
 };
 
 // How far the top grain's centre has fallen [m] after 0.5 s, gravity on at t = 0.
@@ -174,6 +180,8 @@ TEST(DemRepose, PyramidOfThreeDiscsOrFourSpheresStandsAtTheClosedFormFriction) {
         const Real mr1 = pyr.mu_roll(0.1), mr0 = pyr.mu_roll(0);
         std::printf("%dD: closed form mu %.4f, floor %.4f, mu_r %.4f (mu = 0.1), %.4f (mu = 0)\n",
                     dim, mu, muf, mr1, mr0);
+        // the rolling cases' floor (mu 0.5) holds the state the bound assumes
+        ASSERT_LT(std::max(pyr.mu_floor_rolling(0.1), pyr.mu_floor_rolling(0)), 0.5);
         for (const Case c : {Case{1.04 * mu, 0.5, 0, true}, Case{0.96 * mu, 0.5, 0, false},
                              Case{0.5, 1.04 * muf, 0, true}, Case{0.5, 0.96 * muf, 0, false},
                              Case{0.1, 0.5, 1.10 * mr1, true}, Case{0.1, 0.5, 0.93 * mr1, false},
