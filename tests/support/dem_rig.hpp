@@ -19,6 +19,11 @@ struct DemRig {
         const Real m = sphere_mass(rho, r);
         return grains.add(x, v, r, m, 0.4 * m * r * r, std::uint8_t(mat));
     }
+    // Adds a disc of a quasi-2D layer `thickness` thick (dim = 2) of material index mat.
+    Index add_disc(Vec3 x, Real r, Real rho, Real thickness, int mat) {
+        const Real m = rho * 3.14159265358979 * r * r * thickness;
+        return grains.add(x, {}, r, m, 0.5 * m * r * r, std::uint8_t(mat));
+    }
     void add_plane(const std::string& name, Vec3 point, Vec3 normal, int material) {
         dem::Wall w;
         w.name = name;

@@ -35,8 +35,8 @@ Real departure_angle(Real mu_roll, const std::string& rolling, Real beta0_deg, R
     m.friction = 0.8; // atan(0.8) = 38.7 deg: rolling, not sliding, sets the limit below
     m.rolling_friction = mu_roll;
     DemRig rig;
-    const Real mass = rho * pi * r * r * thickness;
-    rig.grains.add({0, 0, std::sqrt(3.0) * r}, {}, r, mass, 0.5 * mass * r * r, 0);
+    const Index top = rig.add_disc({0, 0, std::sqrt(3.0) * r}, r, rho, thickness, 0);
+    const Real mass = rig.grains.mass[std::size_t(top)];
     // The two base discs: fixed spheres of a body that never moves (the reaction is dropped).
     dem::ObstacleSet base;
     for (Real x : {-r, r}) base.spheres.push_back({{x, 0, 0}, {}, {}, r, 1e6 * mass, 0, 0});
@@ -140,9 +140,8 @@ Real pyramid_drop(const Pyramid& pyr, Real mu_grains, Real mu_floor, Real mu_rol
     DemRig rig;
     // a disc of the quasi-2D layer (thickness `thickness`) or a sphere, at rest at x
     const auto add_grain = [&](Vec3 x) {
-        if (pyr.dim == 3) return rig.add_sphere(x, {}, r, rho, 0);
-        const Real mass = rho * pi * r * r * thickness;
-        return rig.grains.add(x, {}, r, mass, 0.5 * mass * r * r, 0);
+        return pyr.dim == 3 ? rig.add_sphere(x, {}, r, rho, 0)
+                            : rig.add_disc(x, r, rho, thickness, 0);
     };
     const Real base = r / std::sin(pi / Real(pyr.bottom())); // bottom centres from the axis
     for (int b = 0; b < pyr.bottom(); ++b) {
