@@ -1,7 +1,9 @@
 // Clumps of grains (multi-sphere particles) against closed forms: a torque-free tumbling clump
 // keeps its angular momentum and energy; a dimer of two touching discs on a tilting table
 // slides at atan(mu) or tips over its downhill disc at 45 deg, whichever comes first, where a
-// single disc rolls away at any tilt.
+// single disc rolls away at any tilt; a grain on dimers stands without friction between the
+// grains, where the same heap of round grains needs it.
+#include "debrisflow/rigid/quaternion_k.hpp"
 #include "dem_rig.hpp"
 #include "run_case.hpp"
 #include <algorithm>
@@ -35,7 +37,7 @@ void add_dimer(DemRig& rig, Real r, Real t, Real rho) {
         ids.push_back(rig.grains.next_id());
         rig.grains.add({x, 0, z}, {}, r, m, 3 * m * r * r, 0);
     }
-    rig.grains.clumps.add({0, 0, z}, {}, {}, rigid::Quat{}, 2 * m, {0, 1 / (6 * m * r * r), 0}, ids,
+    rig.grains.clumps.add({0, 0, z}, {}, {}, rigid::Quat{}, 2 * m, {0, 1 / (3 * m * r * r), 0}, ids,
                           {{-r, 0, 0}, {r, 0, 0}});
 }
 
@@ -144,4 +146,107 @@ clump = [[0, 0, 0, 1], [1.2, 0, 0, 0.7], [0.3, 1.0, 0.4, 0.5]]
     EXPECT_LT(norm(cl.pos[0] - (x0 + 0.5 * v0)), 1e-12);
     const auto d1 = distances();
     for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(d1[k] / d0[k], 1, 1e-12);
+}
+
+// The smallest heap on clumps: k dimers (two touching grains of radius r as one clump; k = 2
+// discs in 2D, 3 spheres in 3D) lie on a floor, pointing away from the axis, their inner grains
+// touching in a ring; a grain of the same size rests on the inner ones. Closed form (statics):
+// each contact with the top grain lies beta from the vertical (30 deg in 2D, asin(1/sqrt(3)) =
+// 35.26 deg in 3D) and needs no friction: the top grain sits in the pocket as long as the
+// dimers stay, and a dimer cannot turn out of the way (its two floor contacts stop it rolling;
+// the push, inward of the outer contact and pointing down, cannot tip it: both floor normals
+// stay positive). Each frictionless contact carries N = m g / (k cos(beta)); its horizontal
+// part m g tan(beta) / k pushes the dimer (mass 2 m) outward along its axis, against the floor
+// friction mu_f (2 m g + m g / k). So the heap stands iff mu_f >= tan(beta) / (2 k + 1) (2D:
+// 0.1155, 3D: 0.1010), whatever the friction between the grains, zero included. The same heap
+// of round grains (the k inner grains alone, as in DemRepose's pyramid) needs mu >= tan(beta/2)
+// between the grains or rolling resistance: with mu = 0 and no rolling resistance it collapses.
+namespace {
+
+// A dimer of two touching grains of radius r centred at c, its axis horizontal at angle a from
+// x (a clump of two discs of thickness t in 2D, two spheres in 3D); member inertia is unused.
+void add_dimer(DemRig& rig, int dim, Vec3 c, Real a, Real r, Real t, Real rho) {
+    const Real m = dim == 2 ? rho * t * pi * r * r : DemRig::sphere_mass(rho, r);
+    const Vec3 u{std::cos(a), std::sin(a), 0};
+    std::vector<std::uint32_t> ids;
+    for (Real s : {-1.0, 1.0}) {
+        ids.push_back(rig.grains.next_id());
+        rig.grains.add(c + (s * r) * u, {}, r, m, m * r * r, 0);
+    }
+    // body frame along the axis: 2D I_y = 2 (m r^2 / 2 + m r^2); 3D I_x = 2 (2/5 m r^2),
+    // I_y = I_z = 2 (2/5 m r^2 + m r^2)
+    const Vec3 inv_i =
+        dim == 2 ? Vec3{0, 1 / (3 * m * r * r), 0}
+                 : Vec3{1 / (0.8 * m * r * r), 1 / (2.8 * m * r * r), 1 / (2.8 * m * r * r)};
+    rig.grains.clumps.add(c, {}, {}, rigid::axis_angle({0, 0, 1}, a), 2 * m, inv_i, ids,
+                          {{-r, 0, 0}, {r, 0, 0}});
+}
+
+// How far the top grain's centre has fallen [m] after 0.5 s, gravity on at t = 0: on dimers,
+// or on single grains where the dimers' inner grains are.
+Real heap_on_dimers_drop(int dim, bool dimers, Real mu_grains, Real mu_floor) {
+    const Real r = 0.005, t = 0.005, rho = 2500;
+    dem::Material grain = glass(mu_grains);
+    dem::Material floor = grain;
+    floor.name = "floor";
+    dem::PairOverride on_floor;
+    on_floor.a = "glass", on_floor.b = "floor";
+    on_floor.friction = mu_floor;
+    DemRig rig;
+    const int k = dim == 2 ? 2 : 3;
+    const Real base = r / std::sin(pi / k); // inner grains' centres from the axis
+    for (int b = 0; b < k; ++b) {
+        const Real a = 2 * pi * b / k;
+        const Vec3 u{std::cos(a), std::sin(a), 0};
+        if (dimers)
+            add_dimer(rig, dim, Vec3{0, 0, r} + (base + r) * u, a, r, t, rho);
+        else if (dim == 2)
+            rig.add_disc(Vec3{0, 0, r} + base * u, r, rho, t, 0);
+        else
+            rig.add_sphere(Vec3{0, 0, r} + base * u, {}, r, rho, 0);
+    }
+    const Vec3 top{0, 0, r + std::sqrt(4 * r * r - base * base)};
+    const Index top_id =
+        dim == 2 ? rig.add_disc(top, r, rho, t, 0) : rig.add_sphere(top, {}, r, rho, 0);
+    rig.add_plane("floor", {0, 0, 0}, {0, 0, 1}, 1);
+    dem::DemParams p;
+    p.dim = dim;
+    p.reorder = false; // the top grain keeps its index
+    p.safety = 0.05;
+    rig.start(p, {grain, floor}, {-0.1, dim == 2 ? 0 : -0.1, -0.01}, {0.1, dim == 2 ? 0 : 0.1, 0.1},
+              {on_floor});
+    for (Real time = 0; time < 0.5; time += rig.solver->dt()) rig.solver->advance(rig.solver->dt());
+    return top.z - rig.grains.pos[std::size_t(top_id)].z;
+}
+
+} // namespace
+
+// The floor's threshold from both sides, 4 % above (stands: the top grain falls less than
+// 0.01 r in 0.5 s; the contacts' elastic overlap is ~1e-6 r) and below (collapses: more than
+// 0.2 r), with no friction between the grains; and the round grains' heap at the floor
+// friction that holds the dimers, which collapses.
+TEST(DemClump, GrainOnDimersStandsWithoutGrainFrictionAtTheClosedFormFloorFriction) {
+    const Real r = 0.005;
+    for (const int dim : {2, 3}) {
+        const int k = dim == 2 ? 2 : 3;
+        const Real beta = dim == 2 ? pi / 6 : std::asin(1 / std::sqrt(3.0));
+        const Real mu_f = std::tan(beta) / (2 * k + 1);
+        struct Case {
+            bool dimers;
+            Real mu_floor;
+            bool stands;
+        };
+        for (const Case c : {Case{true, 1.04 * mu_f, true}, Case{true, 0.96 * mu_f, false},
+                             Case{false, 1.04 * mu_f, false}}) {
+            const Real drop = heap_on_dimers_drop(dim, c.dimers, 0, c.mu_floor);
+            std::printf("%dD %s, mu 0, floor %.4f (closed form %.4f): top grain fell %.3g r (%s)\n",
+                        dim, c.dimers ? "on dimers" : "on round grains", c.mu_floor, mu_f, drop / r,
+                        c.stands ? "stands" : "collapses");
+            if (c.stands)
+                EXPECT_LT(drop, 0.01 * r) << dim << "D floor " << c.mu_floor;
+            else
+                EXPECT_GT(drop, 0.2 * r)
+                    << dim << "D floor " << c.mu_floor << " dimers " << c.dimers;
+        }
+    }
 }

@@ -6,8 +6,8 @@
 // the torque of the friction force, F R = m g R sin(phi), up to mu_r R* F_n =
 // mu_r R* m g cos(phi), so the disc stays up to beta = 30 deg + atan(mu_r R* / R)
 // = 30 deg + atan(mu_r / 2) for equal discs (R* = R / 2), as long as atan(mu) exceeds that
-// (rolling, not sliding). The same heap of two-sphere clumps is not built here: grains are
-// spheres (discs in 2D) only.
+// (rolling, not sliding). A heap on two-grain clumps, which needs no friction between the
+// grains, is DemClump.GrainOnDimersStandsWithoutGrainFrictionAtTheClosedFormFloorFriction.
 #include "dem_rig.hpp"
 #include <algorithm>
 #include <cmath>
