@@ -59,6 +59,17 @@ grep -q '"status": "unstable"' "$out/unstable/summary.json" || fail "unstable su
 /usr/bin/python3 -c "import json,sys; json.load(open(sys.argv[1]))" "$out/unstable/summary.json" \
     || fail "the unstable run's summary.json is not valid JSON"
 [ -s "$out/unstable/vtk/particles.pvd" ] || fail "unstable run lost its output"
+
+# Fluid thrown at the far wall at 20 m/s, faster than c0 = 17 m/s: the weakly-compressible
+# fluid is squeezed beyond 30 % of rho0, and the run stops (exit 3) saying so, on the host and
+# on the resident backend's path, instead of finishing with water at twice its density.
+for backend in host host_resident; do
+    "$exe" run "$demo" --out "$out/squeezed_$backend" --set 'fluid.0.velocity=[20,0]' \
+        --set time.end=0.3 --backend "$backend" --quiet > "$out/squeezed.txt" 2>&1; rc=$?
+    [ $rc -eq 3 ] || fail "squeezed fluid ($backend): exit $rc, expected 3"
+    grep -q "fluid compressed beyond the weakly-compressible range .*rho/rho0 = 1.3" \
+        "$out/squeezed.txt" || fail "squeezed fluid message ($backend): $(cat "$out/squeezed.txt")"
+done
 # The same with the default domain.exit = "remove": the fluid that leaves is removed and counted
 # by face (all of it through the top, z+), with a warning once over 1 % of the fluid's mass.
 { cat "$demo"; printf '\n[[probe]]\nname = "lost"\ntype = "domain_exit"\nevery = 0.01\n'; } \

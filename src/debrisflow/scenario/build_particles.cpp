@@ -234,6 +234,30 @@ std::vector<WallPoint> build_wall(const io::WallSpec& w, const io::CaseSpec& c) 
     return out;
 }
 
+// A weakly-compressible fluid at rest is compressed by its own weight: by Tait's law
+// rho/rho0 = (1 + gamma rho0 g D / (rho0 c0^2))^(1/gamma) at the bottom of a column D deep.
+// Beyond a tenth (c0 below about 2.7 sqrt(g D) for gamma = 7) the run would start as a
+// different fluid and stop at once (the health check's bound is 30 %); the usual choice,
+// c0 = 10 sqrt(g D), keeps it near 1 %.
+void require_weakly_compressible(const io::CaseSpec& c, const models::TaitEos& eos, Real depth,
+                                 const std::string& what) {
+    const auto& sph = c.sph;
+    const Real g = norm(sph.gravity);
+    const Real squeeze = eos.density(sph.rho0 * g * depth) / sph.rho0 - 1;
+    if (!(squeeze > Real(0.1))) return;
+    const bool by_coefficient = c.c0_coefficient > 0;
+    throw InputError(fmt::format(
+        "{}: c0 = {:.4g} m/s is too low for this fluid: its weight alone would compress the "
+        "bottom of its {:.4g} m deep column by {:.0f} % (a weakly-compressible fluid should stay "
+        "within about 1 %: c0 of at least 10 sqrt(g D) = {:.4g} m/s, and 10 times the fastest "
+        "flow speed); {}",
+        what, sph.c0, depth, 100 * squeeze, 10 * std::sqrt(g * depth),
+        by_coefficient ? "raise " + c.sph_origin.at("c0_coefficient") +
+                             fmt::format(" (c0 = coefficient x sqrt(g x reference_depth = {} m))",
+                                         c.reference_depth)
+                       : "raise " + c.sph_origin.at("c0")));
+}
+
 } // namespace
 
 ParticleId build_particles(const io::CaseSpec& c, particles::ParticleSet& set,
@@ -328,8 +352,13 @@ ParticleId build_particles(const io::CaseSpec& c, particles::ParticleSet& set,
                                          fl.origin.block(), fl.name, c.dp));
         require_inside_domain(pts, c, what, fmt::format("its particles at dp = {} m", c.dp));
         Real top = -std::numeric_limits<Real>::max(); // highest point against gravity
-        for (const Vec3& p : pts) top = std::max(top, -dot(p, down));
+        Real bottom = std::numeric_limits<Real>::max();
+        for (const Vec3& p : pts) {
+            top = std::max(top, -dot(p, down));
+            bottom = std::min(bottom, -dot(p, down));
+        }
         top += Real(0.5) * c.dp;
+        if (g > 0) require_weakly_compressible(c, eos, top - bottom + Real(0.5) * c.dp, what);
         if (fl.hydrostatic && g > 0) {
             Column col{pts[0], pts[0], top};
             for (const Vec3& p : pts)

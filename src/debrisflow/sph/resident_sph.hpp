@@ -172,9 +172,11 @@ public:
     }
 
     void check_health(Real t) const override {
-        const Index bad =
-            Space::first_where(n_, Unhealthy{ParticleHealthy{view(), host_.domain()}});
-        if (bad < n_) throw InstabilityError(unhealthy_message(state_at(bad), t, host_.domain()));
+        const Index bad = Space::first_where(
+            n_, Unhealthy{ParticleHealthy::of(view(), host_.domain(), host_.params().rho0)});
+        if (bad < n_)
+            throw InstabilityError(
+                unhealthy_message(state_at(bad), t, host_.domain(), host_.params()));
     }
 
     void add_timings(time::Timings& t) const override {

@@ -1,5 +1,6 @@
 // The SphSolver's stable step (CFL, forces, viscosity; DualSPHysics's criteria) and its
-// health check (a particle outside the domain or not finite stops the run).
+// health check (a particle outside the domain, not finite, or a fluid particle compressed or
+// expanded beyond max_density_change stops the run).
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/exec/parallel.hpp"
 #include "debrisflow/sph/sph_solver.hpp"
@@ -38,20 +39,32 @@ std::string low_step_words(const ParticleState& s, Real rho0) {
                        s.id, s.x.x, s.x.y, s.x.z, s.rho / rho0, norm(s.v), norm(s.a));
 }
 
-std::string unhealthy_message(const ParticleState& s, Real t, const Domain& d) {
+std::string unhealthy_message(const ParticleState& s, Real t, const Domain& d, const SphParams& p) {
     const bool finite = std::isfinite(s.x.x) && std::isfinite(s.v.x) && std::isfinite(s.rho) &&
                         std::isfinite(s.x.z);
+    bool inside = true;
+    for (int k = 0; k < 3; ++k)
+        if (!d.periodic[k] && (s.x[k] < d.lo[k] || s.x[k] > d.hi[k])) inside = false;
+    const std::string where = fmt::format(
+        "at t = {:.6g} s: particle id {} ({}) at ({:.4g}, {:.4g}, {:.4g}) m, velocity ({:.4g}, "
+        "{:.4g}, {:.4g}) m/s, density {:.6g} kg/m^3",
+        t, s.id, s.fluid ? "fluid" : "boundary", s.x.x, s.x.y, s.x.z, s.v.x, s.v.y, s.v.z, s.rho);
+    if (!finite) return "non-finite state (NaN/Inf) " + where;
+    if (!inside)
+        return fmt::format("particle left the domain {}; domain is ({}, {}, {}) to ({}, {}, {}) "
+                           "m{}",
+                           where, d.lo.x, d.lo.y, d.lo.z, d.hi.x, d.hi.y, d.hi.z,
+                           s.fluid ? " (domain.exit = \"remove\" takes fluid that leaves out of "
+                                     "the run)"
+                                   : "");
+    // Tait: p = B [(rho/rho0)^gamma - 1] with B = rho0 c0^2 / gamma
     return fmt::format(
-        "{} at t = {:.6g} s: particle id {} ({}) at ({:.4g}, {:.4g}, {:.4g}) m, velocity "
-        "({:.4g}, {:.4g}, {:.4g}) m/s, density {:.6g} kg/m^3{}",
-        finite ? "particle left the domain" : "non-finite state (NaN/Inf)", t, s.id,
-        s.fluid ? "fluid" : "boundary", s.x.x, s.x.y, s.x.z, s.v.x, s.v.y, s.v.z, s.rho,
-        finite ? fmt::format("; domain is ({}, {}, {}) to ({}, {}, {}) m{}", d.lo.x, d.lo.y, d.lo.z,
-                             d.hi.x, d.hi.y, d.hi.z,
-                             s.fluid ? " (domain.exit = \"remove\" takes fluid that leaves out of "
-                                       "the run)"
-                                     : "")
-               : std::string());
+        "fluid {} beyond the weakly-compressible range {} (rho/rho0 = {:.3f}, outside 1 +- {:g}; "
+        "pressure {:.4g} Pa): the flow is too fast or too violent for the sound speed c0 = {:.4g} "
+        "m/s (a weakly-compressible fluid needs c0 of at least 10 times its fastest speed: raise "
+        "sph.c0 or sph.c0_coefficient), or the time step is too long (sph.cfl)",
+        s.rho > p.rho0 ? "compressed" : "expanded", where, s.rho / p.rho0, max_density_change,
+        p.c0 * p.c0 * p.rho0 / p.gamma * (std::pow(s.rho / p.rho0, p.gamma) - 1), p.c0);
 }
 
 namespace {
@@ -99,13 +112,14 @@ time::DtLimit SphSolver::initial_dt() const {
 void SphSolver::check_health(Real t) const {
     const Index n = set_.size();
     // the first bad particle (n: none)
-    const ParticleHealthy healthy{const_cast<particles::ParticleSet&>(set_).view(), domain_};
+    const ParticleHealthy healthy = ParticleHealthy::of(
+        const_cast<particles::ParticleSet&>(set_).view(), domain_, params_.rho0);
     const auto first_bad = [&](Index i, Index& bad) {
         if (!healthy(i) && i < bad) bad = i;
     };
     const Index bad = exec::reduce(n, n, first_bad, [](Index& b, Index v) { b = v < b ? v : b; });
     if (bad == n) return;
-    throw InstabilityError(unhealthy_message(state_of(set_, bad), t, domain_));
+    throw InstabilityError(unhealthy_message(state_of(set_, bad), t, domain_, params_));
 }
 
 } // namespace debrisflow::sph

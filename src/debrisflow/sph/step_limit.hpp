@@ -36,7 +36,8 @@ struct ParticleState {
 // " (fluid id .. at (..) m: rho/rho0 .., |v| .., |a| ..)", appended to the step's limiter.
 std::string low_step_words(const ParticleState& s, Real rho0);
 
-// The health check's message for the first particle that left the domain or is not finite.
-std::string unhealthy_message(const ParticleState& s, Real t, const Domain& d);
+// The health check's message for the first particle that left the domain, is not finite, or
+// (fluid) was compressed or expanded beyond max_density_change.
+std::string unhealthy_message(const ParticleState& s, Real t, const Domain& d, const SphParams& p);
 
 } // namespace debrisflow::sph

@@ -181,11 +181,23 @@ struct AccelerationNorm {
     }
 };
 
-// Whether particle i is fit to go on: position, velocity and density finite, and inside every
-// closed side of the domain (the health check stops the run at the first that is not).
+// How far a weakly-compressible fluid particle's density may leave rho0 before the run stops:
+// 30 % (DualSPHysics's default RhopOut range for water, 700-1300 kg/m^3). By Tait's law that is
+// a pressure of 0.75 rho0 c0^2, the water hammer of a flow at 3/4 of c0: the fluid is no longer
+// the nearly incompressible one the method stands for (c0 >= 10 |v| keeps it within ~1 %).
+inline constexpr Real max_density_change = Real(0.3);
+
+// Whether particle i is fit to go on: position, velocity and density finite, inside every
+// closed side of the domain, and (fluid) its density within max_density_change of rho0 (the
+// health check stops the run at the first that is not).
 struct ParticleHealthy {
     particles::ParticleView pv;
     Domain d;
+    Real rho_min = 0, rho_max = 0; // a fluid particle's density bounds
+
+    static ParticleHealthy of(particles::ParticleView pv, const Domain& d, Real rho0) {
+        return {pv, d, (1 - max_density_change) * rho0, (1 + max_density_change) * rho0};
+    }
     DF_HD bool operator()(Index i) const {
         const Real v[7] = {pv.x[i], pv.y[i], pv.z[i], pv.vx[i], pv.vy[i], pv.vz[i], pv.rho[i]};
         bool ok = true;
@@ -194,6 +206,7 @@ struct ParticleHealthy {
             const Real c = v[k];
             if (!d.periodic[k] && (c < d.lo[k] || c > d.hi[k])) ok = false;
         }
+        if (ok && pv.is_fluid(i)) ok = pv.rho[i] >= rho_min && pv.rho[i] <= rho_max;
         return ok;
     }
 };
