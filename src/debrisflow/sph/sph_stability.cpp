@@ -3,6 +3,7 @@
 // expanded beyond max_density_change stops the run).
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/exec/parallel.hpp"
+#include "debrisflow/models/eos_tait_k.hpp"
 #include "debrisflow/sph/sph_solver.hpp"
 #include "debrisflow/sph/step_limit.hpp"
 #include "debrisflow/sph/time_schemes_k.hpp"
@@ -57,14 +58,13 @@ std::string unhealthy_message(const ParticleState& s, Real t, const Domain& d, c
                            s.fluid ? " (domain.exit = \"remove\" takes fluid that leaves out of "
                                      "the run)"
                                    : "");
-    // Tait: p = B [(rho/rho0)^gamma - 1] with B = rho0 c0^2 / gamma
     return fmt::format(
         "fluid {} beyond the weakly-compressible range {} (rho/rho0 = {:.3f}, outside 1 +- {:g}; "
         "pressure {:.4g} Pa): the flow is too fast or too violent for the sound speed c0 = {:.4g} "
         "m/s (a weakly-compressible fluid needs c0 of at least 10 times its fastest speed: raise "
         "sph.c0 or sph.c0_coefficient), or the time step is too long (sph.cfl)",
         s.rho > p.rho0 ? "compressed" : "expanded", where, s.rho / p.rho0, max_density_change,
-        p.c0 * p.c0 * p.rho0 / p.gamma * (std::pow(s.rho / p.rho0, p.gamma) - 1), p.c0);
+        models::TaitEos(p.rho0, p.c0, p.gamma).pressure(s.rho), p.c0);
 }
 
 namespace {
