@@ -415,3 +415,53 @@ file = ")" + stl + R"("
         EXPECT_NEAR(overlap / one_spring, 1, 0.02) << pos; // one contact, not several
     }
 }
+
+// A simple-cubic column of ten 10 mm spheres on the floor: the bed-load estimate of
+// scenario/grain_bed_load.hpp is the floor contact's force, 10 m g, exactly (closed form:
+// overlap 10 m g / k_n, linear law, floor of the grains' material), and the column, left to
+// come to rest, sits on the floor at that overlap (tolerance 1 %: the column's residual
+// oscillation after 0.3 s). A column ten times softer than the refusal's 10 % of the radius is
+// refused with the stiffness that keeps it at 1 %.
+TEST(DemGrains, BedOverlapEstimateIsTheRestingColumnsOverlap) {
+    const std::string column = R"([[grains]]
+name = "column"
+packing = "lattice"
+material = "glass"
+diameter = 0.01
+region = { shape = "box", min = [0, 0, 0], max = [0.0101, 0.0101, 0.1001] }
+)";
+    const std::string dir = (std::filesystem::temp_directory_path() / "dem_bed_column").string();
+    std::filesystem::remove_all(dir);
+    io::CaseSpec spec = test::case_from_toml("dem_bed_column", grains_case(column),
+                                             {"time.end=0.3", "material.0.restitution=0.1"});
+    app::Simulation sim(spec);
+    const auto& g = sim.grains().grains();
+    ASSERT_EQ(g.size(), 10);
+    const Real pi = 3.14159265358979323846, r = 0.005;
+    const Real m = 2500 * 4 / 3.0 * pi * r * r * r, k = 1e5;
+    const Real expected = 10 * m * 9.81 / k; // 1.284e-6 m
+    EXPECT_NEAR(sim.bed_overlap().force, 10 * m * 9.81, 1e-12);
+    EXPECT_NEAR(sim.bed_overlap().overlap, expected, 1e-9 * expected);
+    EXPECT_NE(sim.bed_overlap().where.find("glass-"), std::string::npos);
+    app::RunOptions opt;
+    opt.out_dir = dir;
+    opt.quiet = true;
+    sim.run(opt);
+    Real bottom = 1;
+    for (Index i = 0; i < g.size(); ++i) bottom = std::min(bottom, g.pos[std::size_t(i)].z);
+    EXPECT_NEAR(r - bottom, expected, 0.01 * expected) << "floor overlap at rest";
+
+    // k_n = 1 N/m: 10 m g / k_n = 0.128 m, 26 radii; 1 % of r needs 10 m g / 5e-5 = 2.57e3.
+    const std::string e = error_of(grains_case(column) + "\n");
+    EXPECT_EQ(e, "");
+    io::CaseSpec soft =
+        test::case_from_toml("dem_bed_soft", grains_case(column), {"material.0.kn=1"});
+    try {
+        app::Simulation refused(soft);
+        ADD_FAILURE() << "a column sinking 26 radii into its contacts was accepted";
+    } catch (const InputError& x) {
+        const std::string w = x.what();
+        EXPECT_NE(w.find("too soft to rest on their contacts"), std::string::npos) << w;
+        EXPECT_NE(w.find("'material.0.kn' = 1 to about 2.57e+03 for 1 %"), std::string::npos) << w;
+    }
+}

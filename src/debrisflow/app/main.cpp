@@ -67,6 +67,12 @@ int check(const std::string& file, const std::vector<std::string>& sets) {
                                  spec.dem.params.dt > 0 ? "user" : "automatic", d.automatic_dt().dt,
                                  d.automatic_dt().limiter, d.stability_dt().dt,
                                  spec.dem.params.subcycle ? ", sub-cycled" : "");
+        if (const auto& bed = sim.bed_overlap(); bed.fraction > 0)
+            std::cout << fmt::format("dem: the beds' own weight presses {:.3g} N into a contact "
+                                     "at their base, {:.2g} % of the mean radius deep ({}; "
+                                     "refused above {:.0f} %)\n",
+                                     bed.force, 100 * bed.fraction, bed.where,
+                                     100 * scenario::max_bed_overlap);
         if (!sim.has_fluid() || spec.backend != "host")
             std::cout << fmt::format("backend: {}\n", dem::backend_words(spec.backend));
         if (sim.has_fluid() && spec.backend != "host" && spec.dem.fluid_drag != "none")

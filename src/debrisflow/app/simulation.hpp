@@ -22,6 +22,7 @@
 #include "debrisflow/probes/grain_reader.hpp"
 #include "debrisflow/probes/probe.hpp"
 #include "debrisflow/rigid/body_solver.hpp"
+#include "debrisflow/scenario/grain_bed_load.hpp"
 #include "debrisflow/sph/resident_backend.hpp"
 #include "debrisflow/sph/sph_solver.hpp"
 #include "debrisflow/time/integrator.hpp"
@@ -58,6 +59,8 @@ public:
     bool has_fluid() const { return solver_ != nullptr; }
     bool has_grains() const { return dem_ != nullptr; }
     dem::DemSolver& grains() { return *dem_; }
+    // The deepest overlap the grain blocks' own weight presses into their contacts at t = 0.
+    const scenario::BedOverlap& bed_overlap() const { return bed_overlap_; }
     bool has_bodies() const { return rigid_ != nullptr; }
     rigid::BodySolver& bodies() { return *rigid_; }
     // The unresolved SPH-DEM coupling ([dem] fluid_drag), or null.
@@ -114,6 +117,7 @@ private:
     std::unique_ptr<sph::ResidentPhase> resident_;
     std::unique_ptr<probes::FluidReader> host_fluid_; // the probes' view of the host solver's fluid
     dem::GrainSet grains_;
+    scenario::BedOverlap bed_overlap_;
     dem::WallSet dem_walls_;
     std::unique_ptr<dem::DemSolver> dem_;
     std::unique_ptr<probes::GrainReader> host_grains_; // the probes' view of the host's grains

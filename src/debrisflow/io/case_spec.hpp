@@ -114,6 +114,7 @@ struct FeedSpec {
 struct DemSpec {
     dem::DemParams params;
     std::vector<dem::Material> materials;
+    std::vector<Origin> material_origins; // where each [[material]] is in the case file
     std::vector<dem::PairOverride> overrides;
     Real thickness = 0;              // 2D: disc thickness [m] (mass of a disc, as PFC2D)
     bool settle = false;             // settle under gravity before t = 0

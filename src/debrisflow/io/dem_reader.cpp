@@ -326,6 +326,7 @@ void read_dem(const ConfigTable& root, CaseSpec& c) {
     const auto material_tables = root.tables("material");
     for (const auto& t : material_tables) {
         c.dem.materials.push_back(read_material(t));
+        c.dem.material_origins.push_back(t.origin());
         for (std::size_t i = 0; i + 1 < c.dem.materials.size(); ++i)
             if (c.dem.materials[i].name == c.dem.materials.back().name)
                 t.fail("name", "two materials are named \"" + c.dem.materials[i].name + "\"");

@@ -252,7 +252,8 @@ void require_clear_of_earlier_blocks(const io::CaseSpec& c, const io::GrainsSpec
 
 } // namespace
 
-void build_grains(const io::CaseSpec& c, dem::GrainSet& g) {
+BedOverlap build_grains(const io::CaseSpec& c, dem::GrainSet& g) {
+    BedOverlap worst;
     for (const auto& b : c.dem.grains) {
         const Index before = g.size();
         if (b.packing == "file") {
@@ -277,7 +278,10 @@ void build_grains(const io::CaseSpec& c, dem::GrainSet& g) {
                     throw InputError(fmt::format("{}: grains '{}' extend outside the domain in {}",
                                                  b.origin.block(), b.name, "xyz"[d]));
             }
+        const BedOverlap bed = require_bed_rests_on_contacts(c, b, g, before, g.size());
+        if (bed.fraction > worst.fraction) worst = bed;
     }
+    return worst;
 }
 
 void build_dem_walls(const io::CaseSpec& c, dem::WallSet& walls) {

@@ -2,14 +2,16 @@
 #include "debrisflow/dem/grain_set.hpp"
 #include "debrisflow/dem/wall_set.hpp"
 #include "debrisflow/io/case_spec.hpp"
+#include "debrisflow/scenario/grain_bed_load.hpp"
 
 namespace debrisflow::scenario {
 
 // Creates the grains of every [[grains]] block (sizes drawn from the block's distribution,
 // placed by random non-overlapping insertion, on a lattice, singly, or read from a saved
 // state). Masses: spheres rho 4/3 pi r^3 (I = 2/5 m r^2); in 2D discs rho pi r^2 t of the
-// case's thickness t (I = 1/2 m r^2), as PFC2D.
-void build_grains(const io::CaseSpec& spec, dem::GrainSet& grains);
+// case's thickness t (I = 1/2 m r^2), as PFC2D. Refuses a block too soft to rest on its
+// contacts (grain_bed_load.hpp) and returns the deepest bed overlap of the blocks.
+BedOverlap build_grains(const io::CaseSpec& spec, dem::GrainSet& grains);
 
 // Appends one grain of diameter d and material index mat (masses as above).
 void add_grain(const io::CaseSpec& c, dem::GrainSet& g, Vec3 x, Vec3 v, Vec3 w, Real d, int mat);

@@ -1,0 +1,156 @@
+#include "debrisflow/scenario/grain_bed_load.hpp"
+#include "debrisflow/core/error.hpp"
+#include "debrisflow/dem/contact_laws_k.hpp"
+#include "debrisflow/dem/materials.hpp"
+#include "debrisflow/scenario/build_grains.hpp"
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+
+namespace debrisflow::scenario {
+
+namespace {
+
+constexpr Real pi = 3.14159265358979323846;
+
+// The elastic normal force of pair p at overlap delta, at rest (no dashpot).
+Real force_at(const dem::PairParams& p, Real r_eff, Real delta) {
+    Real friction_factor = 1;
+    const dem::ContactInput in{delta, 0, r_eff, 1, 1};
+    return dem::normal_response(p, in, 0, friction_factor).fn;
+}
+
+// The overlap at which pair p carries `force` at rest, by bisection on [0, limit] (every law's
+// elastic force grows with the overlap); limit when even that overlap carries less.
+Real overlap_carrying(const dem::PairParams& p, Real r_eff, Real force, Real limit) {
+    if (force_at(p, r_eff, limit) < force) return limit;
+    Real lo = 0, hi = limit;
+    for (int it = 0; it < 200 && hi - lo > 1e-14 * limit; ++it) {
+        const Real mid = Real(0.5) * (lo + hi);
+        (force_at(p, r_eff, mid) < force ? lo : hi) = mid;
+    }
+    return hi;
+}
+
+// Span of the points' projections on axis e.
+Real span_along(const dem::GrainSet& g, Index first, Index last, Vec3 e) {
+    Real lo = std::numeric_limits<Real>::max(), hi = -lo;
+    for (Index i = first; i < last; ++i) {
+        const Real s = dot(g.pos[std::size_t(i)], e);
+        lo = std::min(lo, s), hi = std::max(hi, s);
+    }
+    return hi - lo;
+}
+
+std::string stiffness_key(const io::CaseSpec& c, int material, const std::string& key) {
+    const auto m = std::size_t(material);
+    return m < c.dem.material_origins.size()
+               ? c.dem.material_origins[m].at(key)
+               : c.file + ": material '" + c.dem.materials[m].name + "' key '" + key + "'";
+}
+
+bool uses_springs(const dem::PairParams& p) {
+    return dem::ContactLawRegistry::visit_index(
+        p.law, []<class L>() { return L::stiffness == dem::Stiffness::springs; });
+}
+
+} // namespace
+
+BedOverlap require_bed_rests_on_contacts(const io::CaseSpec& c, const io::GrainsSpec& block,
+                                         const dem::GrainSet& g, Index first, Index last) {
+    BedOverlap out;
+    const Vec3 gravity = c.dem.params.gravity;
+    const Real gmag = norm(gravity);
+    if (last <= first || !(gmag > 0)) return out;
+    const Vec3 down = (1 / gmag) * gravity;
+    // Mass and mean radius of the block (masses from the material and the radius, whatever the
+    // grain's place in a clump).
+    Real mass = 0, radius_sum = 0;
+    for (Index i = first; i < last; ++i) {
+        const auto k = std::size_t(i);
+        const Real r = g.radius[k], rho = c.dem.materials[g.material[k]].density;
+        mass += c.dim == 2 ? rho * pi * r * r * c.dem.thickness : rho * 4 / 3 * pi * r * r * r;
+        radius_sum += r;
+    }
+    const Real r = radius_sum / Real(last - first), d = 2 * r;
+    // The footprint: the block's extent across gravity, one diameter added for the grains'
+    // own size.
+    Real footprint = 0, grain_area = 0;
+    if (c.dim == 2) {
+        const Vec3 across = cross(down, Vec3{0, 1, 0});
+        footprint = (span_along(g, first, last, (1 / norm(across)) * across) + d) * c.dem.thickness;
+        grain_area = d * c.dem.thickness;
+    } else {
+        const Vec3 trial = std::abs(down.x) < Real(0.9) ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+        Vec3 e1 = cross(down, trial);
+        e1 = (1 / norm(e1)) * e1;
+        const Vec3 e2 = cross(down, e1);
+        footprint = (span_along(g, first, last, e1) + d) * (span_along(g, first, last, e2) + d);
+        grain_area = d * d;
+    }
+    const Real force = mass * gmag / footprint * grain_area;
+
+    const auto& materials = c.dem.materials;
+    const int nm = int(materials.size());
+    const auto table = dem::build_pair_table(materials, c.dem.overrides, c.dem.params.rolling);
+    // The partners of the block's grains: one another, and each wall material (-1: walls
+    // without one take the grain's own).
+    std::vector<int> walls;
+    for (const auto& w : c.walls) {
+        const int m = w.material.empty() ? -1 : material_index(c, w.material);
+        if (std::find(walls.begin(), walls.end(), m) == walls.end()) walls.push_back(m);
+    }
+    std::vector<bool> present(std::size_t(nm), false);
+    for (Index i = first; i < last; ++i) present[g.material[std::size_t(i)]] = true;
+    const dem::PairParams* limiting = nullptr;
+    Real limiting_r_eff = 0;
+    int softer = 0; // the material whose stiffness sets the limiting pair's
+    for (int a = 0; a < nm; ++a) {
+        if (!present[std::size_t(a)]) continue;
+        struct Partner {
+            int material;
+            bool wall;
+            std::string name;
+        };
+        std::vector<Partner> partners{{a, false, materials[std::size_t(a)].name}};
+        for (int w : walls)
+            partners.push_back(w < 0 ? Partner{a, true, "wall"}
+                                     : Partner{w, true, materials[std::size_t(w)].name + " wall"});
+        for (const auto& [b, wall, name] : partners) {
+            const dem::PairParams& p = table[std::size_t(a * nm + b)];
+            const Real r_eff = wall ? r : r / 2;
+            const Real overlap = overlap_carrying(p, r_eff, force, 2 * r);
+            if (overlap / r <= out.fraction) continue;
+            out = {overlap / r, overlap, force,
+                   fmt::format("grains '{}', {}-{} contact", block.name,
+                               materials[std::size_t(a)].name, name)};
+            limiting = &p, limiting_r_eff = r_eff;
+            const auto &ma = materials[std::size_t(a)], &mb = materials[std::size_t(b)];
+            softer =
+                uses_springs(p)
+                    ? (mb.kn > 0 && mb.kn < ma.kn ? b : a)
+                    : (!mb.rigid && (ma.rigid || mb.youngs_modulus < ma.youngs_modulus) ? b : a);
+        }
+    }
+    if (!(out.fraction > max_bed_overlap)) return out;
+
+    // The contact force is proportional to k_n (linear) or E* (Hertz, DCDEM): scaling the
+    // stiffness by force / F(1 % of r) brings the overlap to about 1 %.
+    const Real factor = force / force_at(*limiting, limiting_r_eff, Real(0.01) * r);
+    const bool springs = uses_springs(*limiting);
+    const auto& owner = materials[std::size_t(softer)];
+    const Real value = springs ? owner.kn : owner.youngs_modulus;
+    throw InputError(fmt::format(
+        "{}: the grains are too soft to rest on their contacts: the bed's own weight ({:.4g} kg "
+        "over {:.4g} m^2) presses each contact at its base with about {:.3g} N, which sinks the "
+        "{} {}{:.3g} m deep, {:.0f} % of the grains' mean radius {:.3g} m (refused above {:.0f} %; "
+        "a DEM contact should stay well under 1 %, or grains pass through one another and "
+        "through walls); raise {} = {:.4g} to about {:.3g} for 1 %",
+        block.origin.block(), mass, footprint, force, out.where.substr(out.where.find(", ") + 2),
+        out.overlap >= 2 * r ? "more than " : "", out.overlap, 100 * out.fraction, r,
+        100 * max_bed_overlap, stiffness_key(c, softer, springs ? "kn" : "youngs_modulus"), value,
+        value * factor));
+}
+
+} // namespace debrisflow::scenario
