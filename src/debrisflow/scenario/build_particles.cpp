@@ -5,6 +5,7 @@
 #include "debrisflow/scenario/lattice.hpp"
 #include "debrisflow/scenario/stl_mesh.hpp"
 #include "debrisflow/sph/sph_params.hpp"
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 #include <functional>
@@ -234,6 +235,15 @@ std::vector<WallPoint> build_wall(const io::WallSpec& w, const io::CaseSpec& c) 
     return out;
 }
 
+// Where a case's c0 comes from, for a message that says what to raise.
+std::string c0_key(const io::CaseSpec& c) {
+    return c.c0_coefficient > 0
+               ? c.sph_origin.at("c0_coefficient") +
+                     fmt::format(" (c0 = coefficient x sqrt(g x reference_depth = {} m))",
+                                 c.reference_depth)
+               : c.sph_origin.at("c0");
+}
+
 // A weakly-compressible fluid at rest is compressed by its own weight: by Tait's law
 // rho/rho0 = (1 + gamma rho0 g D / (rho0 c0^2))^(1/gamma) at the bottom of a column D deep.
 // Beyond a tenth (c0 below about 2.7 sqrt(g D) for gamma = 7) the run would start as a
@@ -245,17 +255,31 @@ void require_weakly_compressible(const io::CaseSpec& c, const models::TaitEos& e
     const Real g = norm(sph.gravity);
     const Real squeeze = eos.density(sph.rho0 * g * depth) / sph.rho0 - 1;
     if (!(squeeze > Real(0.1))) return;
-    const bool by_coefficient = c.c0_coefficient > 0;
     throw InputError(fmt::format(
         "{}: c0 = {:.4g} m/s is too low for this fluid: its weight alone would compress the "
         "bottom of its {:.4g} m deep column by {:.0f} % (a weakly-compressible fluid should stay "
         "within about 1 %: c0 of at least 10 sqrt(g D) = {:.4g} m/s, and 10 times the fastest "
-        "flow speed); {}",
-        what, sph.c0, depth, 100 * squeeze, 10 * std::sqrt(g * depth),
-        by_coefficient ? "raise " + c.sph_origin.at("c0_coefficient") +
-                             fmt::format(" (c0 = coefficient x sqrt(g x reference_depth = {} m))",
-                                         c.reference_depth)
-                       : "raise " + c.sph_origin.at("c0")));
+        "flow speed); raise {}",
+        what, sph.c0, depth, 100 * squeeze, 10 * std::sqrt(g * depth), c0_key(c)));
+}
+
+// The same bound on a speed the case imposes (a fluid block's initial velocity, an inlet's
+// largest inflow, a moving wall): flow brought to rest from speed v is compressed by its
+// stagnation pressure rho0 v^2 / 2 (Tait), about Ma^2 / 2 for Mach number Ma = v / c0. Beyond a
+// tenth (v above about 0.45 c0) the run is a compressible flow, not the weakly-compressible
+// one the model assumes, and stops once the fluid leaves rho0 by 30 %; c0 = 10 v keeps it near
+// 0.5 %.
+void require_subsonic(const io::CaseSpec& c, const models::TaitEos& eos, Real speed,
+                      const std::string& what) {
+    const auto& sph = c.sph;
+    const Real squeeze = eos.density(Real(0.5) * sph.rho0 * speed * speed) / sph.rho0 - 1;
+    if (!(squeeze > Real(0.1))) return;
+    throw InputError(fmt::format(
+        "{} {:.4g} m/s is too fast for c0 = {:.4g} m/s (Mach {:.2g}): brought to rest, the "
+        "flow would compress the fluid by {:.0f} % (a weakly-compressible fluid should stay "
+        "within about 1 %: c0 of at least 10 times the fastest flow speed, {:.4g} m/s here); "
+        "raise {}",
+        what, speed, sph.c0, speed / sph.c0, 100 * squeeze, 10 * speed, c0_key(c)));
 }
 
 } // namespace
@@ -268,6 +292,16 @@ ParticleId build_particles(const io::CaseSpec& c, particles::ParticleSet& set,
     // compressed by its own weight.
     const Real volume = sph::lattice_volume(c.dp, c.dim);
     const models::TaitEos eos(sph.rho0, sph.c0, sph.gamma);
+    for (const auto& in : c.inlets) {
+        const Real peak = *std::max_element(in.discharge.begin(), in.discharge.end());
+        require_subsonic(c, eos, peak / in.area(c.dim),
+                         in.origin.at("discharge") +
+                             fmt::format(": inlet '{}': its largest inflow speed (Q = {:.4g} over "
+                                         "{:.4g} m^2)",
+                                         in.name, peak, in.area(c.dim)));
+    }
+    for (const auto& w : c.walls)
+        require_subsonic(c, eos, norm(w.velocity), w.origin.at("velocity") + ": the wall's speed");
     std::vector<Vec3> boundary;
     std::vector<std::vector<WallPoint>> walls;
     for (const auto& w : c.walls) {
@@ -359,6 +393,7 @@ ParticleId build_particles(const io::CaseSpec& c, particles::ParticleSet& set,
         }
         top += Real(0.5) * c.dp;
         if (g > 0) require_weakly_compressible(c, eos, top - bottom + Real(0.5) * c.dp, what);
+        require_subsonic(c, eos, norm(fl.velocity), fl.origin.at("velocity") + ": its speed");
         if (fl.hydrostatic && g > 0) {
             Column col{pts[0], pts[0], top};
             for (const Vec3& p : pts)
