@@ -1,4 +1,5 @@
 // Probe keys of issue #29: a front along -x, and the walls a pressure map can tile.
+#include "debrisflow/probes/pressure_notes.hpp"
 #include "run_case.hpp"
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -138,4 +139,24 @@ TEST(ProbeInput, PressureMapRefusesAMovingWall) {
     const std::string e = test::input_error_of("map_on_moving_wall", toml);
     EXPECT_NE(e.find("probe.1.wall"), std::string::npos) << e;
     EXPECT_NE(e.find("moves"), std::string::npos) << e;
+}
+
+// What `check` and the log say a wall-pressure probe measures (probes/pressure_notes.hpp):
+// the water-hammer peak on any wall, the low load up a DBC wall only with DBC, nothing for a
+// case without wall-pressure probes.
+TEST(ProbeInput, WallPressureNoteFollowsTheWallTreatment) {
+    const std::string demo = std::string(DEBRISFLOW_SOURCE_DIR) + "/cases/dambreak2d.toml";
+    const std::string dbc = probes::wall_pressure_note(io::read_case(demo, {}));
+    EXPECT_NE(dbc.find("'sensor1', 'sensor2', 'sensor3' and 1 more"), std::string::npos) << dbc;
+    EXPECT_NE(dbc.find("water hammer, about rho c0 u, which follows c0 = 17.16 m/s"),
+              std::string::npos)
+        << dbc;
+    EXPECT_NE(dbc.find("set sph.boundary = \"mdbc\""), std::string::npos) << dbc;
+    const std::string mdbc =
+        probes::wall_pressure_note(io::read_case(demo, {"sph.boundary=\"mdbc\""}));
+    EXPECT_NE(mdbc.find("water hammer"), std::string::npos) << mdbc;
+    EXPECT_EQ(mdbc.find("sph.boundary"), std::string::npos) << mdbc;
+    const std::string none = probes::wall_pressure_note(
+        io::read_case(std::string(DEBRISFLOW_SOURCE_DIR) + "/cases/validation/marin3d.toml", {}));
+    EXPECT_EQ(none, "");
 }

@@ -7,6 +7,7 @@
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/core/memory_budget.hpp"
 #include "debrisflow/exec/parallel.hpp"
+#include "debrisflow/probes/pressure_notes.hpp"
 #if defined(DEBRISFLOW_CUDA_BACKEND)
 #include "debrisflow/exec/cuda_backend.hpp"
 #endif
@@ -52,6 +53,8 @@ int check(const std::string& file, const std::vector<std::string>& sets) {
             d.limiter);
         std::cout << fmt::format(
             "backend: {}\n", sph::backend_words(spec.backend, spec.has_bodies(), spec.has_fem()));
+        if (const auto note = probes::wall_pressure_note(spec); !note.empty())
+            std::cout << note << "\n";
     }
     if (sim.has_grains()) {
         const auto& d = sim.grains();

@@ -3,6 +3,7 @@
 // after the last (the design-formula companions of the measured peaks).
 #include "debrisflow/app/simulation.hpp"
 #include "debrisflow/exec/parallel.hpp"
+#include "debrisflow/probes/pressure_notes.hpp"
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
@@ -58,6 +59,7 @@ void Simulation::log_case(const RunReport& report) {
                           spec_.dim, spec_.t_end));
     log_.line(fmt::format("particles: {} fluid, {} boundary, {} grains; threads: {}", report.fluid,
                           report.boundary, report.grains, report.threads));
+    if (const auto note = probes::wall_pressure_note(spec_); !note.empty()) log_.line(note);
     if (solver_)
         log_.line(
             fmt::format("sph: dp = {} m, kernel {}, h = {:.4g} m, c0 = {:.4g} m/s, viscosity "
