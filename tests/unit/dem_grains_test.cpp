@@ -1,6 +1,8 @@
 // Grains: sizes, packing, settling and saved states; contact history across neighbour
 // rebuilds and reordering; walls made of triangles push once; moving walls; input errors.
 #include "debrisflow/core/error.hpp"
+#include "debrisflow/dem/law_overlap.hpp"
+#include "debrisflow/dem/materials.hpp"
 #include "dem_rig.hpp"
 #include "run_case.hpp"
 #include <algorithm>
@@ -464,4 +466,36 @@ region = { shape = "box", min = [0, 0, 0], max = [0.0101, 0.0101, 0.1001] }
         EXPECT_NE(w.find("too soft to rest on their contacts"), std::string::npos) << w;
         EXPECT_NE(w.find("'material.0.kn' = 1 to about 2.57e+03 for 1 %"), std::string::npos) << w;
     }
+}
+
+// The law-generic overlaps of dem/law_overlap.hpp (used by the checks of a case's stiffness)
+// against the closed forms: linear, F = k delta and an impact's largest overlap v sqrt(m/k);
+// Hertz (Johnson 1985, eqs. 4.23 and 11.23 undamped), delta = (3 F / (4 E* sqrt(R)))^(2/3) and
+// delta_max = (15 m v^2 / (16 E* sqrt(R)))^(2/5). Tolerance 1e-6 relative (Simpson's rule on
+// Hertz's delta^1.5: 1e-5 of the work, a fifth of that in the overlap).
+TEST(DemLawOverlap, StaticAndImpactOverlapsMatchClosedForms) {
+    dem::Material linear;
+    linear.name = "a";
+    linear.kn = 2e5;
+    linear.kt = 2e5;
+    dem::Material hertz;
+    hertz.name = "b";
+    hertz.law = "hertz_mindlin";
+    hertz.youngs_modulus = 5e7;
+    hertz.poisson = 0.3;
+    const auto table = dem::build_pair_table({linear, hertz}, {}, "none");
+    const dem::PairParams &lin = table[0], &hm = table[3];
+    const Real r = 0.005, m = 1.4e-3, v = 3, force = 0.2;
+    EXPECT_NEAR(dem::overlap_carrying(lin, r, force, 2 * r), force / 2e5, 1e-12 * r);
+    EXPECT_NEAR(dem::overlap_absorbing(lin, r, 0.5 * m * v * v, 2 * r), v * std::sqrt(m / 2e5),
+                1e-6 * v * std::sqrt(m / 2e5));
+    const Real e_star = 5e7 / (2 * (1 - 0.09));
+    const Real hertz_static = std::pow(3 * force / (4 * e_star * std::sqrt(r)), 2.0 / 3);
+    const Real hertz_impact = std::pow(15 * m * v * v / (16 * e_star * std::sqrt(r)), 0.4);
+    EXPECT_NEAR(dem::overlap_carrying(hm, r, force, 2 * r), hertz_static, 1e-9 * hertz_static);
+    EXPECT_NEAR(dem::overlap_absorbing(hm, r, 0.5 * m * v * v, 2 * r), hertz_impact,
+                1e-6 * hertz_impact);
+    // beyond the search range: the range's end
+    EXPECT_EQ(dem::overlap_carrying(lin, r, 1e9, 2 * r), 2 * r);
+    EXPECT_EQ(dem::overlap_absorbing(lin, r, 1e9, 2 * r), 2 * r);
 }

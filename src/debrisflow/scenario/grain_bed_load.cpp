@@ -1,6 +1,7 @@
 #include "debrisflow/scenario/grain_bed_load.hpp"
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/dem/contact_laws_k.hpp"
+#include "debrisflow/dem/law_overlap.hpp"
 #include "debrisflow/dem/materials.hpp"
 #include "debrisflow/scenario/build_grains.hpp"
 #include <algorithm>
@@ -13,25 +14,6 @@ namespace debrisflow::scenario {
 namespace {
 
 constexpr Real pi = 3.14159265358979323846;
-
-// The elastic normal force of pair p at overlap delta, at rest (no dashpot).
-Real force_at(const dem::PairParams& p, Real r_eff, Real delta) {
-    Real friction_factor = 1;
-    const dem::ContactInput in{delta, 0, r_eff, 1, 1};
-    return dem::normal_response(p, in, 0, friction_factor).fn;
-}
-
-// The overlap at which pair p carries `force` at rest, by bisection on [0, limit] (every law's
-// elastic force grows with the overlap); limit when even that overlap carries less.
-Real overlap_carrying(const dem::PairParams& p, Real r_eff, Real force, Real limit) {
-    if (force_at(p, r_eff, limit) < force) return limit;
-    Real lo = 0, hi = limit;
-    for (int it = 0; it < 200 && hi - lo > 1e-14 * limit; ++it) {
-        const Real mid = Real(0.5) * (lo + hi);
-        (force_at(p, r_eff, mid) < force ? lo : hi) = mid;
-    }
-    return hi;
-}
 
 // Span of the points' projections on axis e.
 Real span_along(const dem::GrainSet& g, Index first, Index last, Vec3 e) {
@@ -55,6 +37,37 @@ bool uses_springs(const dem::PairParams& p) {
         p.law, []<class L>() { return L::stiffness == dem::Stiffness::springs; });
 }
 
+// Mass and mean radius of grains [first, last) (masses from the material and the radius,
+// whatever the grain's place in a clump).
+std::pair<Real, Real> mass_and_mean_radius(const io::CaseSpec& c, const dem::GrainSet& g,
+                                           Index first, Index last) {
+    Real mass = 0, radius_sum = 0;
+    for (Index i = first; i < last; ++i) {
+        const auto k = std::size_t(i);
+        const Real r = g.radius[k], rho = c.dem.materials[g.material[k]].density;
+        mass += c.dim == 2 ? rho * pi * r * r * c.dem.thickness : rho * 4 / 3 * pi * r * r * r;
+        radius_sum += r;
+    }
+    return {mass, radius_sum / Real(last - first)};
+}
+
+// The materials of a case's walls (-1: walls without one take the grain's own).
+std::vector<int> wall_materials(const io::CaseSpec& c) {
+    std::vector<int> walls;
+    for (const auto& w : c.walls) {
+        const int m = w.material.empty() ? -1 : material_index(c, w.material);
+        if (std::find(walls.begin(), walls.end(), m) == walls.end()) walls.push_back(m);
+    }
+    return walls;
+}
+
+// Of a pair's two materials, the one whose stiffness to raise: the softer.
+int softer_of(const dem::PairParams& p, const std::vector<dem::Material>& m, int a, int b) {
+    const auto &ma = m[std::size_t(a)], &mb = m[std::size_t(b)];
+    if (uses_springs(p)) return mb.kn > 0 && mb.kn < ma.kn ? b : a;
+    return !mb.rigid && (ma.rigid || mb.youngs_modulus < ma.youngs_modulus) ? b : a;
+}
+
 } // namespace
 
 BedOverlap require_bed_rests_on_contacts(const io::CaseSpec& c, const io::GrainsSpec& block,
@@ -64,16 +77,8 @@ BedOverlap require_bed_rests_on_contacts(const io::CaseSpec& c, const io::Grains
     const Real gmag = norm(gravity);
     if (last <= first || !(gmag > 0)) return out;
     const Vec3 down = (1 / gmag) * gravity;
-    // Mass and mean radius of the block (masses from the material and the radius, whatever the
-    // grain's place in a clump).
-    Real mass = 0, radius_sum = 0;
-    for (Index i = first; i < last; ++i) {
-        const auto k = std::size_t(i);
-        const Real r = g.radius[k], rho = c.dem.materials[g.material[k]].density;
-        mass += c.dim == 2 ? rho * pi * r * r * c.dem.thickness : rho * 4 / 3 * pi * r * r * r;
-        radius_sum += r;
-    }
-    const Real r = radius_sum / Real(last - first), d = 2 * r;
+    const auto [mass, r] = mass_and_mean_radius(c, g, first, last);
+    const Real d = 2 * r;
     // The footprint: the block's extent across gravity, one diameter added for the grains'
     // own size.
     Real footprint = 0, grain_area = 0;
@@ -96,11 +101,7 @@ BedOverlap require_bed_rests_on_contacts(const io::CaseSpec& c, const io::Grains
     const auto table = dem::build_pair_table(materials, c.dem.overrides, c.dem.params.rolling);
     // The partners of the block's grains: one another, and each wall material (-1: walls
     // without one take the grain's own).
-    std::vector<int> walls;
-    for (const auto& w : c.walls) {
-        const int m = w.material.empty() ? -1 : material_index(c, w.material);
-        if (std::find(walls.begin(), walls.end(), m) == walls.end()) walls.push_back(m);
-    }
+    const std::vector<int> walls = wall_materials(c);
     std::vector<bool> present(std::size_t(nm), false);
     for (Index i = first; i < last; ++i) present[g.material[std::size_t(i)]] = true;
     const dem::PairParams* limiting = nullptr;
@@ -120,24 +121,20 @@ BedOverlap require_bed_rests_on_contacts(const io::CaseSpec& c, const io::Grains
         for (const auto& [b, wall, name] : partners) {
             const dem::PairParams& p = table[std::size_t(a * nm + b)];
             const Real r_eff = wall ? r : r / 2;
-            const Real overlap = overlap_carrying(p, r_eff, force, 2 * r);
+            const Real overlap = dem::overlap_carrying(p, r_eff, force, 2 * r);
             if (overlap / r <= out.fraction) continue;
             out = {overlap / r, overlap, force,
                    fmt::format("grains '{}', {}-{} contact", block.name,
                                materials[std::size_t(a)].name, name)};
             limiting = &p, limiting_r_eff = r_eff;
-            const auto &ma = materials[std::size_t(a)], &mb = materials[std::size_t(b)];
-            softer =
-                uses_springs(p)
-                    ? (mb.kn > 0 && mb.kn < ma.kn ? b : a)
-                    : (!mb.rigid && (ma.rigid || mb.youngs_modulus < ma.youngs_modulus) ? b : a);
+            softer = softer_of(p, materials, a, b);
         }
     }
     if (!(out.fraction > max_bed_overlap)) return out;
 
     // The contact force is proportional to k_n (linear) or E* (Hertz, DCDEM): scaling the
     // stiffness by force / F(1 % of r) brings the overlap to about 1 %.
-    const Real factor = force / force_at(*limiting, limiting_r_eff, Real(0.01) * r);
+    const Real factor = force / dem::elastic_force(*limiting, limiting_r_eff, Real(0.01) * r);
     const bool springs = uses_springs(*limiting);
     const auto& owner = materials[std::size_t(softer)];
     const Real value = springs ? owner.kn : owner.youngs_modulus;
@@ -151,6 +148,48 @@ BedOverlap require_bed_rests_on_contacts(const io::CaseSpec& c, const io::Grains
         out.overlap >= 2 * r ? "more than " : "", out.overlap, 100 * out.fraction, r,
         100 * max_bed_overlap, stiffness_key(c, softer, springs ? "kn" : "youngs_modulus"), value,
         value * factor));
+}
+
+void require_impact_within_contact(const io::CaseSpec& c, const io::GrainsSpec& block,
+                                   const dem::GrainSet& g, Index first, Index last) {
+    if (last <= first) return;
+    Real speed = 0;
+    for (Index i = first; i < last; ++i) speed = std::max(speed, norm(g.vel[std::size_t(i)]));
+    if (!(speed > 0) || c.walls.empty()) return;
+    const auto [mass, r] = mass_and_mean_radius(c, g, first, last);
+    const Real m = mass / Real(last - first), energy = Real(0.5) * m * speed * speed;
+    const auto& materials = c.dem.materials;
+    const int nm = int(materials.size());
+    const auto table = dem::build_pair_table(materials, c.dem.overrides, c.dem.params.rolling);
+    std::vector<bool> present(std::size_t(nm), false);
+    for (Index i = first; i < last; ++i) present[g.material[std::size_t(i)]] = true;
+    for (int a = 0; a < nm; ++a) {
+        if (!present[std::size_t(a)]) continue;
+        for (int w : wall_materials(c)) {
+            const int b = w < 0 ? a : w;
+            const dem::PairParams& p = table[std::size_t(a * nm + b)];
+            const Real overlap = dem::overlap_absorbing(p, r, energy, 2 * r);
+            if (!(overlap > max_impact_overlap * r)) continue;
+            // The elastic work is proportional to k_n (linear) or E* (Hertz, DCDEM).
+            const Real factor = energy / dem::elastic_work(p, r, max_bed_overlap * r);
+            const bool springs = uses_springs(p);
+            const int softer = softer_of(p, materials, a, b);
+            const auto& owner = materials[std::size_t(softer)];
+            const Real value = springs ? owner.kn : owner.youngs_modulus;
+            throw InputError(fmt::format(
+                "{}: grains '{}' at {:.4g} m/s are too fast for their contacts: a grain of the "
+                "mean size ({:.3g} kg, radius {:.3g} m) hitting a {} head-on sinks {}{:.3g} m "
+                "into it before it stops, {:.0f} % of its radius (refused above {:.0f} %: it "
+                "would pass through walls and other grains); raise {} = {:.4g} to about {:.3g} "
+                "for {:.0f} %, or lower the speed",
+                block.origin.at("velocity"), block.name, speed, m, r,
+                w < 0 ? std::string("wall") : materials[std::size_t(b)].name + " wall",
+                overlap >= 2 * r ? "more than " : "", overlap, 100 * overlap / r,
+                100 * max_impact_overlap,
+                stiffness_key(c, softer, springs ? "kn" : "youngs_modulus"), value, value * factor,
+                100 * max_bed_overlap));
+        }
+    }
 }
 
 } // namespace debrisflow::scenario

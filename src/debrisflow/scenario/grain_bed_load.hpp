@@ -30,4 +30,17 @@ inline constexpr Real max_bed_overlap = Real(0.1);
 BedOverlap require_bed_rests_on_contacts(const io::CaseSpec& c, const io::GrainsSpec& block,
                                          const dem::GrainSet& g, Index first, Index last);
 
+// A grain thrown at a wall stops at the overlap where the pair's elastic work takes up its
+// kinetic energy, 1/2 m v^2 (undamped: the dashpot only shortens it). Beyond half the radius
+// a grain comes within half a radius of the wall's surface, thin walls let it through and its
+// neighbours' contacts change: the impact of a different material.
+inline constexpr Real max_impact_overlap = Real(0.5);
+
+// For the block's fastest grain (its given velocity) against every wall material: throws
+// InputError naming the block's velocity, the pair and its stiffness key, with the stiffness
+// that keeps the impact's overlap at max_bed_overlap, when the overlap exceeds
+// max_impact_overlap of the mean radius.
+void require_impact_within_contact(const io::CaseSpec& c, const io::GrainsSpec& block,
+                                   const dem::GrainSet& g, Index first, Index last);
+
 } // namespace debrisflow::scenario
