@@ -15,16 +15,23 @@ inline Real elastic_force(const PairParams& p, Real r_eff, Real delta) {
     return normal_response(p, in, 0, friction_factor).fn;
 }
 
+// The smallest x in [0, limit] where the increasing grows(x) reaches target, by bisection to
+// `tolerance` x limit; limit when grows(limit) stays below it.
+template <class F> Real bisect_increasing(F grows, Real target, Real limit, Real tolerance) {
+    if (grows(limit) < target) return limit;
+    Real lo = 0, hi = limit;
+    for (int it = 0; it < 200 && hi - lo > tolerance * limit; ++it) {
+        const Real mid = Real(0.5) * (lo + hi);
+        (grows(mid) < target ? lo : hi) = mid;
+    }
+    return hi;
+}
+
 // The overlap at which pair p carries `force`, by bisection on [0, limit] (every law's elastic
 // force grows with the overlap); `limit` when even that overlap carries less.
 inline Real overlap_carrying(const PairParams& p, Real r_eff, Real force, Real limit) {
-    if (elastic_force(p, r_eff, limit) < force) return limit;
-    Real lo = 0, hi = limit;
-    for (int it = 0; it < 200 && hi - lo > Real(1e-14) * limit; ++it) {
-        const Real mid = Real(0.5) * (lo + hi);
-        (elastic_force(p, r_eff, mid) < force ? lo : hi) = mid;
-    }
-    return hi;
+    return bisect_increasing([&](Real d) { return elastic_force(p, r_eff, d); }, force, limit,
+                             Real(1e-14));
 }
 
 // The elastic work int_0^delta F dx (Simpson's rule on 64 intervals: exact for the linear law,
@@ -41,13 +48,8 @@ inline Real elastic_work(const PairParams& p, Real r_eff, Real delta) {
 // (1/2 m* v^2 = the law's elastic work), by bisection on [0, limit]; `limit` when even that
 // overlap takes up less. The dashpot only shortens it.
 inline Real overlap_absorbing(const PairParams& p, Real r_eff, Real energy, Real limit) {
-    if (elastic_work(p, r_eff, limit) < energy) return limit;
-    Real lo = 0, hi = limit;
-    for (int it = 0; it < 100 && hi - lo > Real(1e-10) * limit; ++it) {
-        const Real mid = Real(0.5) * (lo + hi);
-        (elastic_work(p, r_eff, mid) < energy ? lo : hi) = mid;
-    }
-    return hi;
+    return bisect_increasing([&](Real d) { return elastic_work(p, r_eff, d); }, energy, limit,
+                             Real(1e-10));
 }
 
 } // namespace debrisflow::dem

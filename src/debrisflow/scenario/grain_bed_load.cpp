@@ -37,6 +37,18 @@ bool uses_springs(const dem::PairParams& p) {
         p.law, []<class L>() { return L::stiffness == dem::Stiffness::springs; });
 }
 
+// "key = value to about value x factor" for the material whose stiffness sets pair p's: k_n
+// for springs, Young's modulus for the elastic laws (a law's force and work grow in proportion).
+std::string stiffness_to_raise(const io::CaseSpec& c, const dem::PairParams& p, int material,
+                               Real factor) {
+    const bool springs = uses_springs(p);
+    const auto& m = c.dem.materials[std::size_t(material)];
+    const Real value = springs ? m.kn : m.youngs_modulus;
+    return fmt::format("{} = {:.4g} to about {:.3g}",
+                       stiffness_key(c, material, springs ? "kn" : "youngs_modulus"), value,
+                       value * factor);
+}
+
 // Mass and mean radius of grains [first, last) (masses from the material and the radius,
 // whatever the grain's place in a clump).
 std::pair<Real, Real> mass_and_mean_radius(const io::CaseSpec& c, const dem::GrainSet& g,
@@ -49,6 +61,13 @@ std::pair<Real, Real> mass_and_mean_radius(const io::CaseSpec& c, const dem::Gra
         radius_sum += r;
     }
     return {mass, radius_sum / Real(last - first)};
+}
+
+// Which of the nm materials grains [first, last) are made of.
+std::vector<bool> materials_of(const dem::GrainSet& g, Index first, Index last, int nm) {
+    std::vector<bool> present(std::size_t(nm), false);
+    for (Index i = first; i < last; ++i) present[g.material[std::size_t(i)]] = true;
+    return present;
 }
 
 // The materials of a case's walls (-1: walls without one take the grain's own).
@@ -102,8 +121,7 @@ BedOverlap require_bed_rests_on_contacts(const io::CaseSpec& c, const io::Grains
     // The partners of the block's grains: one another, and each wall material (-1: walls
     // without one take the grain's own).
     const std::vector<int> walls = wall_materials(c);
-    std::vector<bool> present(std::size_t(nm), false);
-    for (Index i = first; i < last; ++i) present[g.material[std::size_t(i)]] = true;
+    const std::vector<bool> present = materials_of(g, first, last, nm);
     const dem::PairParams* limiting = nullptr;
     Real limiting_r_eff = 0;
     int softer = 0; // the material whose stiffness sets the limiting pair's
@@ -135,19 +153,15 @@ BedOverlap require_bed_rests_on_contacts(const io::CaseSpec& c, const io::Grains
     // The contact force is proportional to k_n (linear) or E* (Hertz, DCDEM): scaling the
     // stiffness by force / F(1 % of r) brings the overlap to about 1 %.
     const Real factor = force / dem::elastic_force(*limiting, limiting_r_eff, Real(0.01) * r);
-    const bool springs = uses_springs(*limiting);
-    const auto& owner = materials[std::size_t(softer)];
-    const Real value = springs ? owner.kn : owner.youngs_modulus;
     throw InputError(fmt::format(
         "{}: the grains are too soft to rest on their contacts: the bed's own weight ({:.4g} kg "
         "over {:.4g} m^2) presses each contact at its base with about {:.3g} N, which sinks the "
         "{} {}{:.3g} m deep, {:.0f} % of the grains' mean radius {:.3g} m (refused above {:.0f} %; "
         "a DEM contact should stay well under 1 %, or grains pass through one another and "
-        "through walls); raise {} = {:.4g} to about {:.3g} for 1 %",
+        "through walls); raise {} for 1 %",
         block.origin.block(), mass, footprint, force, out.where.substr(out.where.find(", ") + 2),
         out.overlap >= 2 * r ? "more than " : "", out.overlap, 100 * out.fraction, r,
-        100 * max_bed_overlap, stiffness_key(c, softer, springs ? "kn" : "youngs_modulus"), value,
-        value * factor));
+        100 * max_bed_overlap, stiffness_to_raise(c, *limiting, softer, factor)));
 }
 
 void require_impact_within_contact(const io::CaseSpec& c, const io::GrainsSpec& block,
@@ -161,8 +175,7 @@ void require_impact_within_contact(const io::CaseSpec& c, const io::GrainsSpec& 
     const auto& materials = c.dem.materials;
     const int nm = int(materials.size());
     const auto table = dem::build_pair_table(materials, c.dem.overrides, c.dem.params.rolling);
-    std::vector<bool> present(std::size_t(nm), false);
-    for (Index i = first; i < last; ++i) present[g.material[std::size_t(i)]] = true;
+    const std::vector<bool> present = materials_of(g, first, last, nm);
     for (int a = 0; a < nm; ++a) {
         if (!present[std::size_t(a)]) continue;
         for (int w : wall_materials(c)) {
@@ -172,21 +185,17 @@ void require_impact_within_contact(const io::CaseSpec& c, const io::GrainsSpec& 
             if (!(overlap > max_impact_overlap * r)) continue;
             // The elastic work is proportional to k_n (linear) or E* (Hertz, DCDEM).
             const Real factor = energy / dem::elastic_work(p, r, max_bed_overlap * r);
-            const bool springs = uses_springs(p);
-            const int softer = softer_of(p, materials, a, b);
-            const auto& owner = materials[std::size_t(softer)];
-            const Real value = springs ? owner.kn : owner.youngs_modulus;
             throw InputError(fmt::format(
                 "{}: grains '{}' at {:.4g} m/s are too fast for their contacts: a grain of the "
                 "mean size ({:.3g} kg, radius {:.3g} m) hitting a {} head-on sinks {}{:.3g} m "
                 "into it before it stops, {:.0f} % of its radius (refused above {:.0f} %: it "
-                "would pass through walls and other grains); raise {} = {:.4g} to about {:.3g} "
-                "for {:.0f} %, or lower the speed",
+                "would pass through walls and other grains); raise {} for {:.0f} %, or lower the "
+                "speed",
                 block.origin.at("velocity"), block.name, speed, m, r,
                 w < 0 ? std::string("wall") : materials[std::size_t(b)].name + " wall",
                 overlap >= 2 * r ? "more than " : "", overlap, 100 * overlap / r,
                 100 * max_impact_overlap,
-                stiffness_key(c, softer, springs ? "kn" : "youngs_modulus"), value, value * factor,
+                stiffness_to_raise(c, p, softer_of(p, materials, a, b), factor),
                 100 * max_bed_overlap));
         }
     }
