@@ -13,8 +13,6 @@ namespace debrisflow::scenario {
 
 namespace {
 
-constexpr Real pi = 3.14159265358979323846;
-
 // Span of the points' projections on axis e.
 Real span_along(const dem::GrainSet& g, Index first, Index last, Vec3 e) {
     Real lo = std::numeric_limits<Real>::max(), hi = -lo;
@@ -49,16 +47,12 @@ std::string stiffness_to_raise(const io::CaseSpec& c, const dem::PairParams& p, 
                        value * factor);
 }
 
-// Mass and mean radius of grains [first, last) (masses from the material and the radius,
-// whatever the grain's place in a clump).
-std::pair<Real, Real> mass_and_mean_radius(const io::CaseSpec& c, const dem::GrainSet& g,
-                                           Index first, Index last) {
+// Mass and mean radius of grains [first, last) (a clump's members carry shares of its mass).
+std::pair<Real, Real> mass_and_mean_radius(const dem::GrainSet& g, Index first, Index last) {
     Real mass = 0, radius_sum = 0;
     for (Index i = first; i < last; ++i) {
-        const auto k = std::size_t(i);
-        const Real r = g.radius[k], rho = c.dem.materials[g.material[k]].density;
-        mass += c.dim == 2 ? rho * pi * r * r * c.dem.thickness : rho * 4 / 3 * pi * r * r * r;
-        radius_sum += r;
+        mass += g.mass[std::size_t(i)];
+        radius_sum += g.radius[std::size_t(i)];
     }
     return {mass, radius_sum / Real(last - first)};
 }
@@ -96,7 +90,7 @@ BedOverlap require_bed_rests_on_contacts(const io::CaseSpec& c, const io::Grains
     const Real gmag = norm(gravity);
     if (last <= first || !(gmag > 0)) return out;
     const Vec3 down = (1 / gmag) * gravity;
-    const auto [mass, r] = mass_and_mean_radius(c, g, first, last);
+    const auto [mass, r] = mass_and_mean_radius(g, first, last);
     const Real d = 2 * r;
     // The footprint: the block's extent across gravity, one diameter added for the grains'
     // own size.
@@ -170,7 +164,7 @@ void require_impact_within_contact(const io::CaseSpec& c, const io::GrainsSpec& 
     Real speed = 0;
     for (Index i = first; i < last; ++i) speed = std::max(speed, norm(g.vel[std::size_t(i)]));
     if (!(speed > 0) || c.walls.empty()) return;
-    const auto [mass, r] = mass_and_mean_radius(c, g, first, last);
+    const auto [mass, r] = mass_and_mean_radius(g, first, last);
     const Real m = mass / Real(last - first), energy = Real(0.5) * m * speed * speed;
     const auto& materials = c.dem.materials;
     const int nm = int(materials.size());
