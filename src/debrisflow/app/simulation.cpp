@@ -102,10 +102,11 @@ Simulation::Simulation(io::CaseSpec spec)
         probes_.push_back(std::make_unique<probes::FeedProbe>(*feeds_.back(), f.every, "grains"));
         // The DEM step must hold for the smallest grain the feed can release.
         dem::GrainSet prototype;
-        for (Real d : {f.size.min, f.size.max})
+        for (Real d : {f.size.max, f.size.min})
             scenario::add_grain(spec_, prototype, {}, {}, {}, d,
                                 scenario::material_index(spec_, f.material));
         dem_->include_sizes(prototype);
+        scenario::require_feed_within_contact(spec_, f, prototype); // its largest grain first
     }
     for (const auto& f : spec_.rigid.feeds) {
         rock_feeds_.push_back(std::make_unique<flow::RockFeed>(f, spec_));

@@ -278,9 +278,9 @@ BedOverlap build_grains(const io::CaseSpec& c, dem::GrainSet& g) {
                     throw InputError(fmt::format("{}: grains '{}' extend outside the domain in {}",
                                                  b.origin.block(), b.name, "xyz"[d]));
             }
-        require_impact_within_contact(c, b, g, before, g.size());
         const BedOverlap bed = require_bed_rests_on_contacts(c, b, g, before, g.size());
         if (bed.fraction > worst.fraction) worst = bed;
+        require_impact_within_contact(c, b, g, before, g.size());
     }
     return worst;
 }

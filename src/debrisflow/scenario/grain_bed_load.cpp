@@ -158,41 +158,118 @@ BedOverlap require_bed_rests_on_contacts(const io::CaseSpec& c, const io::Grains
         100 * max_bed_overlap, stiffness_to_raise(c, *limiting, softer, factor)));
 }
 
-void require_impact_within_contact(const io::CaseSpec& c, const io::GrainsSpec& block,
-                                   const dem::GrainSet& g, Index first, Index last) {
-    if (last <= first) return;
-    Real speed = 0;
-    for (Index i = first; i < last; ++i) speed = std::max(speed, norm(g.vel[std::size_t(i)]));
-    if (!(speed > 0) || c.walls.empty()) return;
-    const auto [mass, r] = mass_and_mean_radius(g, first, last);
-    const Real m = mass / Real(last - first), energy = Real(0.5) * m * speed * speed;
+namespace {
+
+// The largest projection on `down` of the domain's corners: its lowest point along gravity.
+Real domain_floor(const io::CaseSpec& c, Vec3 down) {
+    Real floor = -std::numeric_limits<Real>::max();
+    for (int k = 0; k < 8; ++k) {
+        const Vec3 corner{(k & 1) ? c.domain.hi.x : c.domain.lo.x,
+                          c.dim == 2 ? 0 : ((k & 2) ? c.domain.hi.y : c.domain.lo.y),
+                          (k & 4) ? c.domain.hi.z : c.domain.lo.z};
+        floor = std::max(floor, dot(corner, down));
+    }
+    return floor;
+}
+
+// What is thrown at the walls: a grain of mass m and radius r of the given materials, released
+// at `released` m/s from `top` (its highest point), given by `where` for the error.
+struct Throw {
+    std::string where, what; // "case.toml:3:1: key 'grains.0.velocity'", "grains 'column'"
+    Real released = 0;       // [m/s]
+    Vec3 top;                // the highest release point
+    Real mass = 0, radius = 0;
+    std::string size;            // "mean", "largest"
+    std::vector<bool> materials; // which materials the grains are made of
+};
+
+// The fastest impact: no force but gravity can speed a grain up beyond the energy it gains
+// falling from its release to the domain's lowest point, |v|^2 = |v0|^2 + 2 g h.
+void require_throw_within_contact(const io::CaseSpec& c, const Throw& t) {
+    const Real gmag = norm(c.dem.params.gravity);
+    const Real fall = gmag > 0
+                          ? std::max(Real(0), domain_floor(c, (1 / gmag) * c.dem.params.gravity) -
+                                                  dot(t.top, (1 / gmag) * c.dem.params.gravity))
+                          : Real(0);
+    const Real speed = std::sqrt(t.released * t.released + 2 * gmag * fall);
     const auto& materials = c.dem.materials;
     const int nm = int(materials.size());
     const auto table = dem::build_pair_table(materials, c.dem.overrides, c.dem.params.rolling);
-    const std::vector<bool> present = materials_of(g, first, last, nm);
     for (int a = 0; a < nm; ++a) {
-        if (!present[std::size_t(a)]) continue;
-        for (int w : wall_materials(c)) {
-            const int b = w < 0 ? a : w;
+        if (!t.materials[std::size_t(a)]) continue;
+        for (const auto& wall : c.walls) {
+            // a moving wall meets the grain head-on at the sum of the speeds
+            const Real closing = speed + norm(wall.velocity);
+            if (!(closing > 0)) continue;
+            const int b = wall.material.empty() ? a : material_index(c, wall.material);
             const dem::PairParams& p = table[std::size_t(a * nm + b)];
+            const Real m = t.mass, r = t.radius, energy = Real(0.5) * m * closing * closing;
             const Real overlap = dem::overlap_absorbing(p, r, energy, 2 * r);
             if (!(overlap > max_impact_overlap * r)) continue;
             // The elastic work is proportional to k_n (linear) or E* (Hertz, DCDEM).
             const Real factor = energy / dem::elastic_work(p, r, max_bed_overlap * r);
+            const std::string how =
+                fall > 0 ? fmt::format("reaching {:.4g} m/s ({:.4g} m/s at release, then a fall of "
+                                       "{:.4g} m to the domain's lowest point)",
+                                       speed, t.released, fall)
+                         : fmt::format("at {:.4g} m/s", speed);
+            const std::string moving =
+                norm(wall.velocity) > 0
+                    ? fmt::format(" moving at {:.4g} m/s towards them ({})", norm(wall.velocity),
+                                  wall.origin.at("velocity"))
+                    : "";
             throw InputError(fmt::format(
-                "{}: grains '{}' at {:.4g} m/s are too fast for their contacts: a grain of the "
-                "mean size ({:.3g} kg, radius {:.3g} m) hitting a {} head-on sinks {}{:.3g} m "
-                "into it before it stops, {:.0f} % of its radius (refused above {:.0f} %: it "
-                "would pass through walls and other grains); raise {} for {:.0f} %, or lower the "
-                "speed",
-                block.origin.at("velocity"), block.name, speed, m, r,
-                w < 0 ? std::string("wall") : materials[std::size_t(b)].name + " wall",
-                overlap >= 2 * r ? "more than " : "", overlap, 100 * overlap / r,
+                "{}: {} {} are too fast for their contacts: a grain of the {} size ({:.3g} kg, "
+                "radius {:.3g} m) hitting the {} wall '{}'{} head-on sinks {}{:.3g} m into it "
+                "before it stops, {:.0f} % of its radius (refused above {:.0f} %: it would pass "
+                "through walls and other grains); raise {} for {:.0f} %, or lower the speed",
+                t.where, t.what, how, t.size, t.mass, r, materials[std::size_t(b)].name, wall.name,
+                moving, overlap >= 2 * r ? "more than " : "", overlap, 100 * overlap / r,
                 100 * max_impact_overlap,
                 stiffness_to_raise(c, p, softer_of(p, materials, a, b), factor),
                 100 * max_bed_overlap));
         }
     }
+}
+
+// The point of grains [first, last) highest against gravity (any grain without gravity).
+Vec3 highest_grain(const dem::GrainSet& g, Index first, Index last, Vec3 gravity) {
+    Vec3 top = g.pos[std::size_t(first)];
+    for (Index i = first; i < last; ++i)
+        if (dot(g.pos[std::size_t(i)], gravity) < dot(top, gravity)) top = g.pos[std::size_t(i)];
+    return top;
+}
+
+} // namespace
+
+void require_impact_within_contact(const io::CaseSpec& c, const io::GrainsSpec& block,
+                                   const dem::GrainSet& g, Index first, Index last) {
+    if (last <= first) return;
+    Real speed = 0;
+    for (Index i = first; i < last; ++i) speed = std::max(speed, norm(g.vel[std::size_t(i)]));
+    const auto [mass, r] = mass_and_mean_radius(g, first, last);
+    require_throw_within_contact(c, {speed > 0 ? block.origin.at("velocity") : block.origin.block(),
+                                     fmt::format("grains '{}'", block.name), speed,
+                                     highest_grain(g, first, last, c.dem.params.gravity),
+                                     mass / Real(last - first), r, "mean",
+                                     materials_of(g, first, last, int(c.dem.materials.size()))});
+}
+
+void require_feed_within_contact(const io::CaseSpec& c, const io::FeedSpec& feed,
+                                 const dem::GrainSet& largest) {
+    const Vec3 gdir = c.dem.params.gravity;
+    Vec3 top = feed.min; // the region's corner highest against gravity
+    for (int a = 0; a < 3; ++a)
+        if (gdir[a] > 0)
+            top[a] = feed.min[a];
+        else if (gdir[a] < 0)
+            top[a] = feed.max[a];
+    if (c.dim == 2) top.y = 0;
+    Throw t{feed.origin.block(), fmt::format("the grains of feed '{}'", feed.name),
+            norm(feed.velocity), top,
+            largest.mass[0],     largest.radius[0],
+            "largest",           materials_of(largest, 0, 1, int(c.dem.materials.size()))};
+    require_throw_within_contact(c, t);
 }
 
 } // namespace debrisflow::scenario

@@ -36,11 +36,18 @@ BedOverlap require_bed_rests_on_contacts(const io::CaseSpec& c, const io::Grains
 // neighbours' contacts change: the impact of a different material.
 inline constexpr Real max_impact_overlap = Real(0.5);
 
-// For the block's fastest grain (its given velocity) against every wall material: throws
-// InputError naming the block's velocity, the pair and its stiffness key, with the stiffness
-// that keeps the impact's overlap at max_bed_overlap, when the overlap exceeds
-// max_impact_overlap of the mean radius.
+// The fastest a grain can hit a wall: its release speed v0 and the fall h from its release
+// to the domain's lowest point, |v|^2 = v0^2 + 2 g h (no other force adds energy for long).
+// For a grain of the block's mean size, at the block's fastest given velocity and released
+// from its highest grain, against every wall material: throws InputError naming the block
+// (its velocity), the pair and its stiffness key, with the stiffness that keeps the impact's
+// overlap at max_bed_overlap, when the overlap exceeds max_impact_overlap of the mean radius.
 void require_impact_within_contact(const io::CaseSpec& c, const io::GrainsSpec& block,
                                    const dem::GrainSet& g, Index first, Index last);
+
+// The same for a feed's grains: the largest it releases (`largest`, one grain), at the feed's
+// velocity from the top of its region.
+void require_feed_within_contact(const io::CaseSpec& c, const io::FeedSpec& feed,
+                                 const dem::GrainSet& largest);
 
 } // namespace debrisflow::scenario
