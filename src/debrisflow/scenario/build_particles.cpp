@@ -282,6 +282,34 @@ void require_subsonic(const io::CaseSpec& c, const models::TaitEos& eos, Real sp
         what, speed, sph.c0, speed / sph.c0, 100 * squeeze, 10 * speed, c0_key(c)));
 }
 
+// A body's surface moves at most at |v| + |w| r (r: the farthest surface particle from its
+// centre of mass), for its initial velocity and every row of a prescribed motion's tables.
+void require_body_subsonic(const io::CaseSpec& c, const models::TaitEos& eos,
+                           const io::BodySpec& spec, const BuiltBody& body) {
+    Real reach = 0;
+    for (const auto& sp : body.sph_points) reach = std::max(reach, norm(sp.p - body.state.pos));
+    Real speed = norm(spec.velocity) + norm(spec.angular_velocity) * reach;
+    std::string key = norm(spec.angular_velocity) > 0 && !(norm(spec.velocity) > 0)
+                          ? "angular_velocity"
+                          : "velocity";
+    for (std::size_t i = 0; i < spec.motion_times.size(); ++i) {
+        const Real v = i < spec.motion_velocity.size() ? norm(spec.motion_velocity[i]) : 0;
+        const Real w =
+            i < spec.motion_angular_velocity.size() ? norm(spec.motion_angular_velocity[i]) : 0;
+        if (v + w * reach > speed) {
+            speed = v + w * reach;
+            key = v > 0 ? "motion_velocity" : "motion_angular_velocity";
+        }
+    }
+    require_subsonic(
+        c, eos, speed,
+        spec.origin.at(key) +
+            fmt::format(": body '{}': its surface's largest speed{}", spec.name,
+                        reach > 0 && key.find("angular") != std::string::npos
+                            ? fmt::format(" (turning, {:.4g} m from its centre of mass)", reach)
+                            : ""));
+}
+
 } // namespace
 
 ParticleId build_particles(const io::CaseSpec& c, particles::ParticleSet& set,
@@ -302,6 +330,8 @@ ParticleId build_particles(const io::CaseSpec& c, particles::ParticleSet& set,
     }
     for (const auto& w : c.walls)
         require_subsonic(c, eos, norm(w.velocity), w.origin.at("velocity") + ": the wall's speed");
+    for (std::size_t k = 0; k < bodies.size() && k < c.rigid.bodies.size(); ++k)
+        require_body_subsonic(c, eos, c.rigid.bodies[k], bodies[k]);
     std::vector<Vec3> boundary;
     std::vector<std::vector<WallPoint>> walls;
     for (const auto& w : c.walls) {
