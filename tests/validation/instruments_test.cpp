@@ -6,8 +6,11 @@
 // (The pressure map's tests are in pressure_map_test.cpp.)
 #include "run_case.hpp"
 #include <cmath>
+#include <filesystem>
 #include <fmt/format.h>
+#include <fstream>
 #include <gtest/gtest.h>
+#include <iterator>
 
 using namespace debrisflow;
 
@@ -178,6 +181,71 @@ every = 0.01
     EXPECT_NEAR(sim.grains().grains().total_mass(), f[2], 1e-12);
     // After 1 s the first grains have fallen ~0.4 m into the bin (free fall: 0.3 s).
     EXPECT_GT(sim.probe("pile").finals()[0], 0.5 * target);
+}
+
+// A feed whose region cannot hold its discharge: with no gravity the grains stay where they are
+// placed, the region fills, and the feed owes more and more. The run says so in its log, once
+// (flow/solid_feed.cpp), and the probe's debt column is what was asked minus what was placed.
+TEST(Instruments, ChokedFeedWarnsOnceThatItFallsBehind) {
+    const auto run = [](const std::string& name, const std::string& gravity, double discharge) {
+        const auto out = std::filesystem::temp_directory_path() / "debrisflow_tests" / name;
+        std::filesystem::remove_all(out);
+        app::Simulation sim(test::case_from_toml(name, fmt::format(R"(
+dimensions = 3
+[time]
+end = 0.5
+[output]
+vtk = false
+[physics]
+gravity = {}
+[domain]
+min = [0, 0, 0]
+max = [0.3, 0.3, 0.6]
+[[material]]
+name = "rock"
+law = "hertz_mindlin"
+density = 2650
+youngs_modulus = 5e6
+poisson = 0.3
+restitution = 0.3
+friction = 0.5
+[[feed]]
+name = "hopper"
+material = "rock"
+min = [0.1, 0.1, 0.4]
+max = [0.16, 0.16, 0.46]
+discharge = {}
+size = {{distribution = "mono", diameter = 0.01}}
+[[wall]]
+name = "bin"
+shape = "box"
+min = [0, 0, 0]
+max = [0.3, 0.3, 0.02]
+)",
+                                                                   gravity, discharge)));
+        sim.run({out.string(), true, 1});
+        std::ifstream log(out / "log.txt");
+        const std::string text{std::istreambuf_iterator<char>(log), {}};
+        long warnings = 0;
+        for (auto at = text.find("falls behind"); at != std::string::npos;
+             at = text.find("falls behind", at + 1))
+            ++warnings;
+        const auto& f = sim.probe("hopper").finals();
+        std::cout << fmt::format("{}: released {:.4e} m^3, owed {:.4e}, {} warning(s)\n", name,
+                                 f[1], f[4], warnings);
+        // what was asked is what was placed plus what is owed
+        EXPECT_NEAR(f[1] + f[4], discharge * 0.5, 1e-12) << name;
+        return std::pair{warnings, f[4] / (discharge * 0.5)};
+    };
+    // 4e-4 m^3/s of 10 mm grains (760 a second) into a 60 mm cube, where random placement fits
+    // about 130 (a third of its volume): choked within 0.2 s, two thirds of 2e-4 m^3 owed
+    const auto [choked, choked_owed] = run("feed_choked", "[0, 0, 0]", 4e-4);
+    EXPECT_EQ(choked, 1);
+    EXPECT_GT(choked_owed, 0.5);
+    // the same region emptied by gravity at a tenth of the rate keeps up: no warning
+    const auto [free, free_owed] = run("feed_free", "[0, 0, -9.81]", 2e-5);
+    EXPECT_EQ(free, 0);
+    EXPECT_LT(free_owed, 0.05);
 }
 
 TEST(Instruments, SolidCrossingCountsLapsInPeriodicFlume) {

@@ -264,6 +264,7 @@ RunReport Simulation::run(const RunOptions& opt) {
                     f->apply(*resident_dem_, *dem_, s.t, s.dt); // where the grains are
                 else
                     f->apply(*dem_, s.t, s.dt);
+                if (const auto note = f->lag_note(s.t); !note.empty()) log_.line(note);
             }
             for (auto& f : rock_feeds_) {
                 // the grains near the feed's region, wherever they are
@@ -275,6 +276,7 @@ RunReport Simulation::run(const RunOptions& opt) {
                 else if (dem_)
                     near = flow::RockFeed::near_in(grains_);
                 f->apply(*rigid_, near, probe_context().fluid, s.t, s.dt);
+                if (const auto note = f->lag_note(s.t); !note.empty()) log_.line(note);
             }
             for (auto& out : outlets_) {
                 const long before = out->bodies_removed();

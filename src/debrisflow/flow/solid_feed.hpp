@@ -25,6 +25,9 @@ public:
     Real mass_in() const { return mass_in_; }         // [kg]
     Real owed() const { return owed_; }               // solid volume not yet placed [m^3]
     long pieces_in() const { return count_; }         // grains or rocks released
+    // Once, when the feed has fallen behind its discharge (its region full: new pieces are
+    // placed only clear of the others), a warning for the log; "" otherwise.
+    std::string lag_note(Real t);
     // Saves or restores the debt, the totals, the next size and the random generator
     // (flow/flow_state.cpp).
     void state(checkpoint::Archive& ar);
@@ -48,6 +51,7 @@ protected:
     Real next_d_; // diameter of the next piece [m]
     Real owed_ = 0, volume_in_ = 0, mass_in_ = 0;
     long count_ = 0;
+    bool lag_warned_ = false;
 };
 
 } // namespace debrisflow::flow

@@ -265,10 +265,14 @@ void require_feed_within_contact(const io::CaseSpec& c, const io::FeedSpec& feed
         else if (gdir[a] < 0)
             top[a] = feed.max[a];
     if (c.dim == 2) top.y = 0;
-    Throw t{feed.origin.block(), fmt::format("the grains of feed '{}'", feed.name),
-            norm(feed.velocity), top,
-            largest.mass[0],     largest.radius[0],
-            "largest",           materials_of(largest, 0, 1, int(c.dem.materials.size()))};
+    Throw t{norm(feed.velocity) > 0 ? feed.origin.at("velocity") : feed.origin.block(),
+            fmt::format("the grains of feed '{}'", feed.name),
+            norm(feed.velocity),
+            top,
+            largest.mass[0],
+            largest.radius[0],
+            "largest",
+            materials_of(largest, 0, 1, int(c.dem.materials.size()))};
     require_throw_within_contact(c, t);
 }
 
