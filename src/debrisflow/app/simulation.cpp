@@ -61,7 +61,7 @@ Simulation::Simulation(io::CaseSpec spec)
     }
     if (dem_fem_) dem_fem_->connect(rigid_.get());
     if (spec_.has_dem) {
-        bed_overlap_ = scenario::build_grains(spec_, grains_);
+        bed_overlap_ = scenario::build_grains(spec_, grains_, dem_walls_);
         dem_ = std::make_unique<dem::DemSolver>(spec_.dem.params, grains_, dem_walls_,
                                                 spec_.dem.materials, spec_.dem.overrides,
                                                 spec_.domain);

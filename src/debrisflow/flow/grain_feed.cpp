@@ -33,6 +33,7 @@ void GrainFeed::apply(dem::DemSolver& dem, Real t, Real dt) {
     for (Index i = 0; i < g.size(); ++i)
         if (region.near(g.pos[std::size_t(i)], g.radius[std::size_t(i)]))
             near.push_back({g.pos[std::size_t(i)], g.radius[std::size_t(i)]});
+    walls_near(dem);
     place(std::move(near), g);
     if (g.size() > before) dem.grains_added(before);
 }
@@ -42,12 +43,26 @@ void GrainFeed::apply(dem::ResidentDemPhase& resident, dem::DemSolver& dem, Real
     if (owed_ < volume_of(next_d_)) return;
     // the few grains near the region come from where the grains are; the new ones go there
     dem::GrainSet fresh = dem::GrainSet::continuing(dem.grains());
+    walls_near(dem);
     place(resident.grains_near(reach()), fresh);
     dem.grains().reserve_ids(fresh.next_id());
     if (fresh.size() > 0) resident.append(fresh);
 }
 
-// Random positions in the region clear of `near` and of each other, while a grain is owed.
+const dem::WallProximity& GrainFeed::walls_near(const dem::DemSolver& dem) {
+    std::vector<bool> active;
+    for (const auto& w : dem.walls().walls()) active.push_back(w.active);
+    if (!walls_near_ || dem.walls().layout() != walls_layout_ || active != walls_active_) {
+        walls_near_ = std::make_unique<dem::WallProximity>(
+            scenario::wall_proximity(case_, dem.walls(), spec_.size.max / 2, true));
+        walls_layout_ = dem.walls().layout();
+        walls_active_ = std::move(active);
+    }
+    return *walls_near_;
+}
+
+// Random positions in the region clear of `near`, of each other and of the fixed walls, while a
+// grain is owed.
 void GrainFeed::place(std::vector<std::pair<Vec3, Real>> near, dem::GrainSet& g) {
     std::uniform_real_distribution<Real> u(0, 1);
     auto& rng = sizes_.rng();
@@ -69,7 +84,8 @@ void GrainFeed::place(std::vector<std::pair<Vec3, Real>> near, dem::GrainSet& g)
                     break;
                 }
             }
-            if (!free) continue;
+            // touching a wall is free; round-off of a region that ends on a wall's face too
+            if (!free || walls_near_->deepest(p, r).overlap > Real(1e-6) * r) continue;
             scenario::add_grain(case_, g, p, spec_.velocity, {}, next_d_, material_);
             near.push_back({p, r});
             placed = true;

@@ -1,6 +1,7 @@
 #include "debrisflow/scenario/build_grains.hpp"
 #include "debrisflow/core/error.hpp"
 #include "debrisflow/dem/box_faces.hpp"
+#include "debrisflow/dem/wall_proximity.hpp"
 #include "debrisflow/io/named.hpp"
 #include "debrisflow/scenario/clump_template.hpp"
 #include "debrisflow/scenario/overlap_grid.hpp"
@@ -252,7 +253,43 @@ void require_clear_of_earlier_blocks(const io::CaseSpec& c, const io::GrainsSpec
 
 } // namespace
 
-BedOverlap build_grains(const io::CaseSpec& c, dem::GrainSet& g) {
+namespace {
+
+// A grain may touch a wall, not start inside it: a wall's contact would throw it out at once
+// (or, with its centre inside a solid beyond a face's reach, let it fall through).
+void require_clear_of_walls(const io::CaseSpec& c, const io::GrainsSpec& b, const dem::GrainSet& g,
+                            Index first, Index last, const dem::WallSet& walls) {
+    if (last <= first || walls.empty()) return;
+    Real rmax = 0;
+    for (Index i = first; i < last; ++i) rmax = std::max(rmax, g.radius[std::size_t(i)]);
+    const dem::WallProximity near = wall_proximity(c, walls, rmax, false);
+    if (near.empty()) return;
+    for (Index i = first; i < last; ++i) {
+        const Vec3 p = g.pos[std::size_t(i)];
+        const Real r = g.radius[std::size_t(i)];
+        const dem::WallOverlap o = near.deepest(p, r);
+        if (!(o.overlap > max_bed_overlap * r)) continue;
+        const std::string how = o.in_solid ? "its centre lies inside"
+                                : o.overlap > r
+                                    ? "its centre lies behind"
+                                    : fmt::format("it sinks {:.3g} m ({:.0f} % of its radius) into",
+                                                  o.overlap, 100 * o.overlap / r);
+        throw InputError(fmt::format(
+            "{}: grains '{}' start inside a wall: the grain of diameter {:.4g} m at ({:.4g}, "
+            "{:.4g}, {:.4g}) m: {} wall '{}' (refused above {:.0f} % of a radius: the wall's "
+            "contact would throw it out, or let it fall through); move the block's region clear "
+            "of the walls (a grain may touch a wall, not cross it)",
+            b.origin.at(b.packing == "file"     ? "file"
+                        : b.packing == "single" ? "position"
+                                                : "region"),
+            b.name, 2 * r, p.x, p.y, p.z, how, walls.walls()[std::size_t(o.wall)].name,
+            100 * max_bed_overlap));
+    }
+}
+
+} // namespace
+
+BedOverlap build_grains(const io::CaseSpec& c, dem::GrainSet& g, const dem::WallSet& walls) {
     BedOverlap worst;
     for (const auto& b : c.dem.grains) {
         const Index before = g.size();
@@ -278,11 +315,26 @@ BedOverlap build_grains(const io::CaseSpec& c, dem::GrainSet& g) {
                     throw InputError(fmt::format("{}: grains '{}' extend outside the domain in {}",
                                                  b.origin.block(), b.name, "xyz"[d]));
             }
+        require_clear_of_walls(c, b, g, before, g.size(), walls);
         const BedOverlap bed = require_bed_rests_on_contacts(c, b, g, before, g.size());
         if (bed.fraction > worst.fraction) worst = bed;
         require_impact_within_contact(c, b, g, before, g.size());
     }
     return worst;
+}
+
+dem::WallProximity wall_proximity(const io::CaseSpec& c, const dem::WallSet& walls, Real reach,
+                                  bool fixed_only) {
+    dem::WallProximity near(walls, reach, c.dim, fixed_only);
+    // build_dem_walls adds one wall per [[wall]] block, in order
+    for (std::size_t k = 0; k < c.walls.size() && k < walls.walls().size(); ++k) {
+        const auto& w = c.walls[k];
+        if (w.type != "box") continue;
+        Vec3 lo = w.shape.min, hi = w.shape.max;
+        if (c.dim == 2) lo.y = -1, hi.y = 1;
+        near.add_solid_box(lo, hi, int(k));
+    }
+    return near;
 }
 
 void build_dem_walls(const io::CaseSpec& c, dem::WallSet& walls) {
