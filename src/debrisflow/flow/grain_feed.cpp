@@ -6,17 +6,8 @@
 
 namespace debrisflow::flow {
 
-namespace {
-constexpr Real pi = 3.14159265358979323846;
-}
-
 GrainFeed::GrainFeed(const io::FeedSpec& spec, const io::CaseSpec& c)
     : SolidFeed(spec, c), material_(scenario::material_index(c, spec.material)) {}
-
-Real GrainFeed::volume_of(Real d) const {
-    const Real r = d / 2;
-    return case_.dim == 2 ? pi * r * r * case_.dem.thickness : Real(4) / 3 * pi * r * r * r;
-}
 
 FeedReach GrainFeed::reach() const {
     return {spec_.min, spec_.max, spec_.size.max, case_.dim == 2};
@@ -24,7 +15,7 @@ FeedReach GrainFeed::reach() const {
 
 void GrainFeed::apply(dem::DemSolver& dem, Real t, Real dt) {
     accrue(t, dt);
-    if (owed_ < volume_of(next_d_)) return;
+    if (owed_ < piece_volume(next_d_)) return;
     auto& g = dem.grains();
     const Index before = g.size();
     // Grains near the region (possible overlaps), gathered once per batch.
@@ -33,18 +24,16 @@ void GrainFeed::apply(dem::DemSolver& dem, Real t, Real dt) {
     for (Index i = 0; i < g.size(); ++i)
         if (region.near(g.pos[std::size_t(i)], g.radius[std::size_t(i)]))
             near.push_back({g.pos[std::size_t(i)], g.radius[std::size_t(i)]});
-    walls_near(dem);
-    place(std::move(near), g);
+    place(std::move(near), g, walls_near(dem));
     if (g.size() > before) dem.grains_added(before);
 }
 
 void GrainFeed::apply(dem::ResidentDemPhase& resident, dem::DemSolver& dem, Real t, Real dt) {
     accrue(t, dt);
-    if (owed_ < volume_of(next_d_)) return;
+    if (owed_ < piece_volume(next_d_)) return;
     // the few grains near the region come from where the grains are; the new ones go there
     dem::GrainSet fresh = dem::GrainSet::continuing(dem.grains());
-    walls_near(dem);
-    place(resident.grains_near(reach()), fresh);
+    place(resident.grains_near(reach()), fresh, walls_near(dem));
     dem.grains().reserve_ids(fresh.next_id());
     if (fresh.size() > 0) resident.append(fresh);
 }
@@ -63,11 +52,12 @@ const dem::WallProximity& GrainFeed::walls_near(const dem::DemSolver& dem) {
 
 // Random positions in the region clear of `near`, of each other and of the fixed walls, while a
 // grain is owed.
-void GrainFeed::place(std::vector<std::pair<Vec3, Real>> near, dem::GrainSet& g) {
+void GrainFeed::place(std::vector<std::pair<Vec3, Real>> near, dem::GrainSet& g,
+                      const dem::WallProximity& walls) {
     std::uniform_real_distribution<Real> u(0, 1);
     auto& rng = sizes_.rng();
     constexpr int tries_per_grain = 200;
-    while (owed_ >= volume_of(next_d_)) {
+    while (owed_ >= piece_volume(next_d_)) {
         const Real r = next_d_ / 2;
         bool placed = false;
         for (int k = 0; k < tries_per_grain && !placed; ++k) {
@@ -85,13 +75,13 @@ void GrainFeed::place(std::vector<std::pair<Vec3, Real>> near, dem::GrainSet& g)
                 }
             }
             // touching a wall is free; round-off of a region that ends on a wall's face too
-            if (!free || walls_near_->deepest(p, r).overlap > Real(1e-6) * r) continue;
+            if (!free || walls.deepest(p, r).overlap > Real(1e-6) * r) continue;
             scenario::add_grain(case_, g, p, spec_.velocity, {}, next_d_, material_);
             near.push_back({p, r});
             placed = true;
         }
         if (!placed) break; // region full: the debt waits for the next step
-        released(volume_of(next_d_), g.mass.back());
+        released(piece_volume(next_d_), g.mass.back());
     }
 }
 

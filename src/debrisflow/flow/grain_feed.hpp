@@ -34,9 +34,9 @@ public:
     Real smallest_diameter() const { return spec_.size.min; }
 
 private:
-    Real volume_of(Real d) const;
     FeedReach reach() const;
-    void place(std::vector<std::pair<Vec3, Real>> near, dem::GrainSet& into);
+    void place(std::vector<std::pair<Vec3, Real>> near, dem::GrainSet& into,
+               const dem::WallProximity& walls);
     // The fixed walls, kept while the walls' layout and which of them are present stay the same.
     const dem::WallProximity& walls_near(const dem::DemSolver& dem);
 

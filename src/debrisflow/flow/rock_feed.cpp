@@ -113,8 +113,7 @@ RockFeed::GrainsNear RockFeed::near_in(const dem::GrainSet& grains) {
 void RockFeed::apply(rigid::BodySolver& bodies, const GrainsNear& grains,
                      const probes::FluidReader* fluid, Real t, Real dt) {
     accrue(t, dt);
-    auto volume_of = [](Real d) { return pi * d * d * d / 6; };
-    if (owed_ < volume_of(next_d_)) return;
+    if (owed_ < piece_volume(next_d_)) return;
     // Grains and SPH particles near the region (possible overlaps), gathered once per batch.
     const Real reach = 2 * spec_.size.max + case_.dp;
     auto near_region = [&](Vec3 p) {
@@ -135,7 +134,7 @@ void RockFeed::apply(rigid::BodySolver& bodies, const GrainsNear& grains,
     std::uniform_real_distribution<Real> u(0, 1);
     auto& rng = sizes_.rng();
     constexpr int tries_per_rock = 200;
-    while (owed_ >= volume_of(next_d_)) {
+    while (owed_ >= piece_volume(next_d_)) {
         Real ratio, mass = 0;
         const scenario::TriangleMesh rock = make_rock(next_d_, ratio);
         Real r = 0;
@@ -179,7 +178,7 @@ void RockFeed::apply(rigid::BodySolver& bodies, const GrainsNear& grains,
             placed = true;
         }
         if (!placed) break; // region full: the debt waits for the next step
-        released(volume_of(next_d_), mass);
+        released(piece_volume(next_d_), mass);
     }
 }
 

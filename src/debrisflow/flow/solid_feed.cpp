@@ -10,12 +10,14 @@ constexpr Real pi = 3.14159265358979323846;
 constexpr Real lag_pieces = 10, lag_fraction = Real(0.05);
 } // namespace
 
+Real SolidFeed::piece_volume(Real d) const {
+    const Real r = d / 2;
+    return case_.dim == 2 ? pi * r * r * case_.dem.thickness : Real(4) / 3 * pi * r * r * r;
+}
+
 std::string SolidFeed::lag_note(Real t) {
     if (lag_warned_) return "";
-    // the next piece's volume as a sphere (2D: a disc of the case's thickness) of its size
-    const Real r = next_d_ / 2;
-    const Real piece =
-        case_.dim == 2 ? pi * r * r * case_.dem.thickness : Real(4) / 3 * pi * r * r * r;
+    const Real piece = piece_volume(next_d_);
     const Real asked = volume_in_ + owed_;
     if (!(owed_ > lag_pieces * piece && owed_ > lag_fraction * asked)) return "";
     lag_warned_ = true;

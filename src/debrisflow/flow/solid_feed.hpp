@@ -35,6 +35,9 @@ public:
 protected:
     // Adds Q_s(t) dt to the debt.
     void accrue(Real t, Real dt) { owed_ += q_.at(t) * dt; }
+    // Volume of a piece of size d: a sphere (2D: a disc of the case's thickness); a rock of
+    // equivalent diameter d has it too.
+    Real piece_volume(Real d) const;
     // Books a piece of `volume` and `mass` as released and draws the next size.
     void released(Real volume, Real mass) {
         owed_ -= volume;

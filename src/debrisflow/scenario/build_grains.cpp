@@ -251,10 +251,6 @@ void require_clear_of_earlier_blocks(const io::CaseSpec& c, const io::GrainsSpec
     }
 }
 
-} // namespace
-
-namespace {
-
 // A grain may touch a wall, not start inside it: a wall's contact would throw it out at once
 // (or, with its centre inside a solid beyond a face's reach, let it fall through).
 void require_clear_of_walls(const io::CaseSpec& c, const io::GrainsSpec& b, const dem::GrainSet& g,
