@@ -22,6 +22,10 @@ TEST(Kernel, WendlandIntegratesToOne) {
     for (int dim : {2, 3})
         EXPECT_NEAR(integral(kernels::WendlandC2(0.1, dim), dim, 0.1), 1.0, 2e-3);
 }
+TEST(Kernel, WendlandC4IntegratesToOne) {
+    for (int dim : {2, 3})
+        EXPECT_NEAR(integral(kernels::WendlandC4(0.1, dim), dim, 0.1), 1.0, 2e-3);
+}
 TEST(Kernel, CubicSplineIntegratesToOne) {
     for (int dim : {2, 3})
         EXPECT_NEAR(integral(kernels::CubicSpline(0.1, dim), dim, 0.1), 1.0, 2e-3);
@@ -40,9 +44,11 @@ TEST(Kernel, GradientMatchesDerivative) {
     check_gradient(kernels::WendlandC2(0.1, 3));
     check_gradient(kernels::CubicSpline(0.1, 2));
     check_gradient(kernels::CubicSpline(0.1, 3));
+    check_gradient(kernels::WendlandC4(0.1, 2));
+    check_gradient(kernels::WendlandC4(0.1, 3));
 }
 TEST(Kernel, RegistryNames) {
     EXPECT_EQ(kernels::KernelRegistry::names(),
-              (std::vector<std::string>{"wendland_c2", "cubic_spline"}));
+              (std::vector<std::string>{"wendland_c2", "cubic_spline", "wendland_c4"}));
     EXPECT_THROW(kernels::make_kernel("gaussian", 0.1, 2), std::invalid_argument);
 }

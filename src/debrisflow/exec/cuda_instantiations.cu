@@ -14,6 +14,7 @@
 #include "debrisflow/exec/cuda_space.cuh"
 #include "debrisflow/kernels/cubic_spline_k.hpp"
 #include "debrisflow/kernels/wendland_c2_k.hpp"
+#include "debrisflow/kernels/wendland_c4_k.hpp"
 #include "debrisflow/models/density_diffusion_k.hpp"
 #include "debrisflow/models/viscosity_k.hpp"
 #include "debrisflow/neighbors/cell_keys_k.hpp"
@@ -107,6 +108,7 @@ void instantiate_all() {
     launch(0, dem::GrainSlotContact{});
     instantiate_kernel<kernels::WendlandC2>();
     instantiate_kernel<kernels::CubicSpline>();
+    instantiate_kernel<kernels::WendlandC4>();
 }
 
 // Throws InputError (naming `where`) when this machine has no CUDA device.

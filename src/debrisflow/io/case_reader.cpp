@@ -64,7 +64,8 @@ void read_sph(const ConfigTable& t, CaseSpec& c) {
     p.dp = c.dp;
     p.kernel = t.choice("kernel", kernels::KernelRegistry::names(), "wendland_c2");
     const Real h_over_dp =
-        t.positive("h_over_dp", p.kernel == "cubic_spline" ? std::sqrt(3.0) : 1.5);
+        t.positive("h_over_dp", kernels::KernelRegistry::visit_name(
+                                    p.kernel, []<class K>() { return K::default_h_over_dp; }));
     if (h_over_dp < 0.5 || h_over_dp > 4)
         t.fail("h_over_dp", "must be within [0.5, 4] (usual: 1.2 to 2; each particle then has "
                             "a few dozen to a few hundred neighbours)");

@@ -8,6 +8,7 @@ namespace debrisflow::kernels {
 // a_D/4 (2 - q)^3 (1 <= q < 2); a_D = 10 / (7 pi h^2) in 2D, 1 / (pi h^3) in 3D.
 struct CubicSpline {
     static constexpr const char* name = "cubic_spline";
+    static constexpr Real default_h_over_dp = Real(1.7320508075688772); // sqrt(3)
     Real h = 0, alpha = 0, inv_h = 0;
 
     CubicSpline() = default;

@@ -8,6 +8,8 @@ namespace debrisflow::kernels {
 // a_D = 7 / (4 pi h^2) in 2D and 21 / (16 pi h^3) in 3D.
 struct WendlandC2 {
     static constexpr const char* name = "wendland_c2";
+    // the lattice sum of x dW/dx is 0.997 in 2D (docs/validation.md, hydrostatic tank)
+    static constexpr Real default_h_over_dp = Real(1.5);
     Real h = 0, alpha = 0, inv_h = 0;
 
     WendlandC2() = default;
