@@ -4,8 +4,8 @@
 Runs cases/deposits/column_collapse2d.toml (discs, no rolling resistance or EPSD),
 column_collapse2d_clumps.toml (two-disc clumps) and column_collapse_channel3d.toml (3D spheres
 between side walls 6 beads apart, or in a slab of that width periodic across the channel) with
-the gate moved so that the settled column has the aspect ratio asked for, then reads the `runout` probe: the column's width L0
-and height H0 at t = 0 (the deposit's front and height), the run-out of the linked deposit
+the gate moved so that the settled column has the aspect ratio asked for, then reads the
+`runout` probe: the column's width L0 and height H0 at t = 0 (the deposit's front and height), the run-out of the linked deposit
 dL = front - L0 and its final height H at the end, and prints a Markdown table with the
 published scalings beside it:
   quasi-2D channels, 3D beads (Lube et al. 2005; Lajeunesse et al. 2005):
