@@ -1,6 +1,8 @@
 // mDBC boundary density (sph/mdbc_k.hpp): a boundary particle whose ghost node lies inside a
 // fluid of uniform density takes that density; one whose ghost node sees less than half a
-// kernel of fluid keeps the density DBC's continuity equation gave it (never below rho_min).
+// kernel of fluid keeps the density DBC's continuity equation gave it (never below rho_min)
+// where the ghost lies in a thin sheet or sees no fluid at all, and carries at most the air's
+// pressure (p = 0) where the ghost lies in air beside the fluid.
 // The no-slip variant (sph.no_slip = "mdbc") also mirrors the fluid's velocity at the ghost
 // node: a linear shear flow is reproduced there exactly (first-order consistency).
 #include "debrisflow/kernels/wendland_c2_k.hpp"
@@ -17,14 +19,15 @@ namespace {
 
 constexpr Real dp = 0.01, h = 1.5 * dp, rho_fluid = 1003;
 
-// A 2D floor of three boundary layers under `fluid_rows` rows of fluid at rho_fluid; returns
-// the index of the middle particle of the floor's top layer.
+// A 2D floor of three boundary layers under `fluid_rows` rows of fluid at rho_fluid, the first
+// `empty_rows` rows above the floor left empty; `probe` is the middle particle of the floor's
+// top layer (its ghost node at z = dp/2, the first row's height).
 struct Floor {
     particles::ParticleSet set;
     neighbors::CellGrid grid;
     Index probe = -1;
 
-    explicit Floor(int fluid_rows) {
+    explicit Floor(int fluid_rows, int empty_rows = 0) {
         const int nx = 20;
         for (int layer = 0; layer < 3; ++layer)
             for (int i = 0; i < nx; ++i) {
@@ -35,7 +38,7 @@ struct Floor {
                 set.wd[k] = (layer + Real(0.5)) * dp;
                 if (layer == 0 && i == nx / 2) probe = k;
             }
-        for (int row = 0; row < fluid_rows; ++row)
+        for (int row = empty_rows; row < empty_rows + fluid_rows; ++row)
             for (int i = 0; i < nx; ++i)
                 set.add({(i + Real(0.5)) * dp, 0, (row + Real(0.5)) * dp}, {}, rho_fluid,
                         1000 * dp * dp, particles::Kind::fluid, 0);
@@ -47,7 +50,7 @@ struct Floor {
     std::array<Real, 4> ghost_after_mdbc() {
         std::vector<Real> ghost(4 * std::size_t(set.size()), Real(-1));
         const sph::MdbcDensity<kernels::WendlandC2> mdbc{
-            set.view(), grid.view(), kernels::WendlandC2(h, 2), h, 1000, 2, ghost.data()};
+            set.view(), grid.view(), kernels::WendlandC2(h, 2), h, 1000, 1000, dp, 2, ghost.data()};
         mdbc(probe);
         const auto k = 4 * std::size_t(probe);
         return {ghost[k], ghost[k + 1], ghost[k + 2], ghost[k + 3]};
@@ -56,7 +59,7 @@ struct Floor {
     Real boundary_density_after_mdbc(Real before, Real rho_min = 1000) {
         set.rho[probe] = before;
         const sph::MdbcDensity<kernels::WendlandC2> mdbc{
-            set.view(), grid.view(), kernels::WendlandC2(h, 2), h, rho_min, 2};
+            set.view(), grid.view(), kernels::WendlandC2(h, 2), h, rho_min, 1000, dp, 2};
         mdbc(probe);
         return set.rho[probe];
     }
@@ -72,6 +75,23 @@ TEST(MdbcDensity, DryGhostKeepsTheContinuityDensity) {
     Floor f(0); // no fluid at all: nothing to mirror
     EXPECT_EQ(f.boundary_density_after_mdbc(1007), 1007);
     EXPECT_EQ(f.boundary_density_after_mdbc(990), 1000); // never below rho_min
+}
+
+TEST(MdbcDensity, GhostInASheetKeepsTheContinuityDensity) {
+    // one row of fluid on the floor: the ghost node sits on a fluid particle, the kernel sum
+    // is below 1/2 and the matrix singular (no extent across the row); the sheet is pressing
+    // on the wall, and DBC's density repels it
+    Floor f(1);
+    EXPECT_EQ(f.boundary_density_after_mdbc(1007), 1007);
+}
+
+TEST(MdbcDensity, GhostInAirCarriesAtMostTheAirsPressure) {
+    // the same row 1 dp higher: the nearest fluid particle is 1 dp from the ghost node, more
+    // than half a lattice cell's diagonal (0.71 dp), so the ghost lies in air beside the fluid
+    Floor f(1, 1);
+    EXPECT_EQ(f.boundary_density_after_mdbc(1007), 1000);    // p = 0, not DBC's 1007
+    EXPECT_EQ(f.boundary_density_after_mdbc(999), 1000);     // never below rho_min
+    EXPECT_EQ(f.boundary_density_after_mdbc(999, 990), 999); // below p = 0 if rho_min allows
 }
 
 TEST(MdbcDensity, NoSlipGhostVelocityOfALinearShearFlow) {

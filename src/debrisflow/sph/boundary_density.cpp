@@ -8,6 +8,7 @@ void SphSolver::update_boundary_density() {
     auto pv = set_.view();
     const auto gv = grid_.view();
     const Real rho_min = boundary_min_density();
+    const Real rho_air = eos_.density(0);
     const bool no_slip = params_.no_slip == "mdbc";
     // The half list's path visits only the boundary particles whose ghost node may see fluid
     // (refresh_mdbc_rows); the others keep their density, and zero ghost velocities. The
@@ -20,7 +21,8 @@ void SphSolver::update_boundary_density() {
     std::visit(
         [&](const auto& kernel) {
             using K = std::decay_t<decltype(kernel)>;
-            const MdbcDensity<K> mdbc{pv, gv, kernel, params_.h, rho_min, params_.dim, ghost};
+            const MdbcDensity<K> mdbc{pv,      gv,         kernel,      params_.h, rho_min,
+                                      rho_air, params_.dp, params_.dim, ghost};
             if (!rows) {
                 exec::for_each(pv.n, mdbc);
                 return;

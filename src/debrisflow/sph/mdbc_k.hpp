@@ -16,12 +16,19 @@ namespace debrisflow::sph {
 //   [ sum V G      sum V G (x) r ] [ grad rho_g ] = [ sum rho V G ].
 // Where the matrix is near singular (few fluid neighbours: a free surface, a corner) the
 // Shepard mean sum rho V W / sum V W is used while the ghost is inside the fluid (kernel sum
-// sum V W >= 1/2, the free-surface criterion). A ghost at or above a free surface, or with no
-// fluid near, carries no information about the wall's pressure; there the boundary particle
-// keeps the density that the continuity equation integrates for it, as DBC (Crespo et al.
-// 2007), so that a sheet thinner than the kernel running along or against the wall is still
-// repelled instead of seeing p = 0. Boundary particles without wall geometry (d = 0) are left
-// to DBC. Densities never fall below rho_min (the density of boundary_min_pressure).
+// sum V W >= 1/2, the free-surface criterion). Where the kernel sum is below 1/2 as well the
+// ghost carries no usable mirror image, and where it stands decides:
+// - inside a sheet thinner than the kernel (a fluid particle within dp sqrt(dim) / 2 of it,
+//   the farthest any point of a filled lattice is from its nearest particle): the boundary
+//   particle keeps the density that the continuity equation integrates for it, as DBC
+//   (Crespo et al. 2007), so that a sheet running along or against the wall is repelled;
+// - in air (fluid within the support, but none that near: above a free surface, beside a wall
+//   standing out of the water, ahead of a surge): the wall carries the air's pressure, p = 0,
+//   at most, so that a density DBC's continuity equation left there does not push the fluid
+//   from a dry wall;
+// - with no fluid in the support at all, the particle keeps its density.
+// Boundary particles without wall geometry (d = 0) are left to DBC. Densities never fall
+// below rho_min (the density of boundary_min_pressure).
 // With `ghost` (sph.no_slip = "mdbc", English et al. 2022's no-slip variant) the same
 // interpolation also gives the fluid's velocity at the ghost node, v_g (its value there: the
 // mirror image needs no gradient), and ghost[4 b ..] = (v_g - v_b, 1); (0, 0, 0, 0) where the
@@ -33,6 +40,8 @@ template <class Kernel> struct MdbcDensity {
     Kernel kernel;
     Real h;       // smoothing length: the matrix is assembled in units of h
     Real rho_min; // floor of the boundary density
+    Real rho_air; // density at p = 0
+    Real dp;      // particle spacing
     int dim;
     Real* ghost = nullptr; // 4 per particle, or nullptr: density only
 
@@ -51,11 +60,13 @@ template <class Kernel> struct MdbcDensity {
         const int fields = ghost ? 4 : 1;
         Real a[4][4] = {}, rhs[4][4] = {};
         const Real inv_h = 1 / h;
+        Real nearest2 = -1; // squared distance of the nearest fluid particle in the support
         grid.for_each_class0_neighbor(-1, xg, pv.x, pv.y, pv.z, [&](Index j, Vec3 r, Real r2) {
             if (!pv.is_fluid(j)) return;
             const Real dist = std::sqrt(r2);
             const Real w = kernel.w(dist);
             if (w <= 0) return;
+            nearest2 = nearest2 < 0 || r2 < nearest2 ? r2 : nearest2;
             const Real vol = pv.mass[j] / pv.rho[j];
             const Vec3 rj = (-inv_h) * r;                        // (x_j - x_g) / h
             const Vec3 gj = (-kernel.grad_over_r(dist) * h) * r; // h grad_j W
@@ -84,6 +95,9 @@ template <class Kernel> struct MdbcDensity {
             // the ghost is at or above a free surface (kernel sum < 1/2): the Shepard mean
             // of the fluid below would push the fluid from a wall standing in air.
             seen = false;
+            // in air: fluid within the support, none within half a lattice cell's diagonal
+            const bool in_air = nearest2 > Real(0.25) * dim * dp * dp;
+            if (in_air && rho > rho_air) rho = rho_air;
         }
         pv.rho[b] = rho > rho_min ? rho : rho_min;
         if (ghost && seen) {

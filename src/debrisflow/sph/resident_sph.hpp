@@ -89,7 +89,8 @@ public:
                 [&](const auto& kernel) {
                     using K = std::decay_t<decltype(kernel)>;
                     Space::for_each(n_, MdbcDensity<K>{pv, grid_, kernel, p.h,
-                                                       host_.boundary_min_density(), p.dim,
+                                                       host_.boundary_min_density(),
+                                                       host_.eos().density(0), p.dp, p.dim,
                                                        mirrored ? ghost_.data() : nullptr});
                 },
                 m.kernel);
