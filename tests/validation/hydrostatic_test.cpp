@@ -124,9 +124,9 @@ TEST(Hydrostatic, Pressure2DMdbc) {
     check_tank(2, 0.005, 0.2, 0.2, Check::pressure, "mdbc");
 }
 // Known gap (docs/validation.md): mDBC does not remove the drift either (0.53 dp over 0.75 s;
-// DBC 0.46 dp). The column is still settling from its lattice start: a vertical breathing mode
-// first, then a circulation that sinks along the side walls at ~2 mm/s at 0.75 s. Issue #29
-// asks <= 0.1 dp.
+// DBC 0.46 dp). With C2 at h = 1.5 dp the square lattice is metastable under the hydrostatic
+// load and gives way where the side walls seed it: a circulation that sinks along the side
+// walls at ~2 mm/s at 0.75 s. Issue #29 asks <= 0.1 dp.
 TEST(HydrostaticKnownGap, Drift2DMdbc) {
     check_tank(2, 0.005, 0.2, 0.2, Check::drift, "mdbc");
 }
