@@ -4,12 +4,16 @@
 # (debrisflow 1 thread, 2 threads, LIGGGHTS) REPEATS times in one sitting; prints every run and
 # the medians with the ratios. Both codes' figures are of the time loop only (debrisflow's
 # summary.json particle_steps_per_second, LIGGGHTS's "Loop time").
-# Usage: bench/run_dem_bench.sh [build dir] [steps] [repeats]   (defaults: build, 5000, 1)
+# With a fourth argument, a baseline build dir (e.g. a build of main), its debrisflow runs too,
+# in turn with the others ("base-1", "base-2"), and the medians' ratios are printed.
+# Usage: bench/run_dem_bench.sh [build dir] [steps] [repeats] [baseline build dir]
+#        (defaults: build, 5000, 1, none)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="${1:-$root/build}"
 steps="${2:-5000}"
 repeats="${3:-1}"
+baseline="${4:-}"
 end=$(python3 -c "print($steps * 2e-7)")
 out=$(mktemp -d)
 results="$out/results.txt"
@@ -21,10 +25,14 @@ for r in $(seq "$repeats"); do
     name=${case%%:*}
     n=${case##*:}
     for t in 1 2; do
-      "$build/debrisflow" run "$root/cases/bench/$name.toml" --out "$out/$name-$t" --threads "$t" \
-        --set time.end="$end" --quiet --overwrite
-      python3 -c "import json; s=json.load(open('$out/$name-$t/summary.json')); \
-print('$name debrisflow-$t', s['particle_steps_per_second'], s['dem']['contacts'])" | tee -a "$results"
+      for who in debrisflow ${baseline:+base}; do
+        exe="$build/debrisflow"
+        [ "$who" = base ] && exe="$baseline/debrisflow"
+        "$exe" run "$root/cases/bench/$name.toml" --out "$out/$name-$t" --threads "$t" \
+          --set time.end="$end" --quiet --overwrite
+        python3 -c "import json; s=json.load(open('$out/$name-$t/summary.json')); \
+print('$name $who-$t', s['particle_steps_per_second'], s['dem']['contacts'])" | tee -a "$results"
+      done
     done
     if [ "$have_liggghts" = 1 ]; then
       (cd "$out" && sed "s/^run 5000/run $steps/" "$root/bench/liggghts/$name.in" > "$name.in" &&
@@ -48,5 +56,8 @@ for case in ("box100k", "flume30"):
     if "liggghts-1" in med:
         line += f"; per core vs LIGGGHTS {med['debrisflow-1'] / med['liggghts-1']:.2f}x"
     line += f"; 2 threads / 1 thread {med['debrisflow-2'] / med['debrisflow-1']:.2f}x"
+    if "base-1" in med:
+        line += (f"; against the baseline: 1 thread {med['debrisflow-1'] / med['base-1']:.3f}x,"
+                 f" 2 threads {med['debrisflow-2'] / med['base-2']:.3f}x")
     print(line)
 EOF
