@@ -20,7 +20,7 @@ results="$out/results.txt"
 : > "$results"
 have_liggghts=0
 command -v liggghts > /dev/null && have_liggghts=1
-for r in $(seq "$repeats"); do
+for _ in $(seq "$repeats"); do
   for case in box100k:100000 flume30:15000; do
     name=${case%%:*}
     n=${case##*:}
