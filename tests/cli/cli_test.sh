@@ -108,4 +108,27 @@ wait $pid; rc=$?
 grep -q "stopped on request (signal 15)" "$out/stopped.txt" || fail "stop message: $(cat "$out/stopped.txt")"
 grep -q '"status": "interrupted"' "$out/stopped/summary.json" || fail "interrupted summary"
 [ "$(wc -l < "$out/stopped/probes/sensor1.csv")" -ge 3 ] || fail "stopped run lost its probe rows"
+# The same while grains settle before the run (dem.settle, here set never to reach its ratio):
+# the stop comes within 200 settling steps, not at the end of dem.settle_max_time.
+"$exe" run "$src/cases/deposits/column_collapse2d.toml" --out "$out/settling" --threads 1 \
+    --quiet --set dem.settle=true --set dem.settle_ratio=1e-12 --set dem.settle_max_time=1000 \
+    > "$out/settling.txt" 2>&1 &
+pid=$!
+for _ in $(seq 600); do
+    grep -q "^dem:" "$out/settling/log.txt" 2> /dev/null && break
+    sleep 0.1
+done
+sleep 1
+kill -TERM $pid
+for _ in $(seq 300); do
+    kill -0 $pid 2> /dev/null || break
+    sleep 0.1
+done
+if kill -0 $pid 2> /dev/null; then
+    kill -KILL $pid
+    fail "SIGTERM while settling: still running 30 s later"
+fi
+wait $pid; rc=$?
+[ $rc -eq 130 ] || fail "stopped settling: exit $rc, expected 130: $(cat "$out/settling.txt")"
+grep -q "while settling the grains" "$out/settling.txt" || fail "settling stop message: $(cat "$out/settling.txt")"
 echo "cli contract OK"

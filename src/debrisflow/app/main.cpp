@@ -245,6 +245,9 @@ int main(int argc, char** argv) {
     } catch (const InstabilityError& e) {
         std::cerr << "error: the run went unstable: " << e.what() << "\n";
         return 3;
+    } catch (const OutOfMemoryError& e) {
+        std::cerr << "error: out of memory: " << e.what() << "\n";
+        return 2;
     } catch (const std::bad_alloc&) {
         std::cerr << "error: out of memory: the case needs more than this machine can give "
                      "(its estimate is printed by `debrisflow check`); coarsen it or set "

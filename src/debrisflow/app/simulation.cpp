@@ -186,8 +186,10 @@ RunReport Simulation::run(const RunOptions& opt) {
     if (dem_ && spec_.dem.settle && !settled_ && t_ == 0 && !resume_.active) {
         try {
             settle_grains();
-        } catch (const InstabilityError& e) {
-            log_.line(std::string("ERROR: settling stopped: ") + e.what());
+        } catch (const RunStopped& e) {
+            const bool asked = dynamic_cast<const InterruptedError*>(&e) != nullptr;
+            log_.line(asked ? std::string(e.what())
+                            : std::string("ERROR: settling stopped: ") + e.what());
             throw;
         }
         if (files && grains_.clumps.empty()) {
@@ -450,7 +452,8 @@ RunReport Simulation::run(const RunOptions& opt) {
         finish_stats();
     } catch (const RunStopped& e) {
         const bool asked = dynamic_cast<const InterruptedError*>(&e) != nullptr;
-        report.status = asked ? "interrupted" : "unstable";
+        const bool memory = dynamic_cast<const OutOfMemoryError*>(&e) != nullptr;
+        report.status = asked ? "interrupted" : memory ? "out_of_memory" : "unstable";
         report.message = e.what();
         report.result = integ.result();
         finish_stats();

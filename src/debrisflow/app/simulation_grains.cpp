@@ -1,5 +1,6 @@
 // The grains' settling before a run, and the rigid bodies' VTK frames.
 #include "debrisflow/app/simulation.hpp"
+#include "debrisflow/app/stop_request.hpp"
 #include "debrisflow/core/error.hpp"
 #include <fmt/format.h>
 
@@ -23,6 +24,11 @@ void Simulation::settle_grains() {
                 spec_.dem.settle_max_time, ratio, spec_.dem.settle_ratio));
         for (long k = 0; k < check_every; ++k) d.step(dt);
         steps += check_every;
+        if (const int sig = stop_signal())
+            throw InterruptedError(fmt::format("stopped on request (signal {}) while settling the "
+                                               "grains, after {:.4g} s of settling (mean "
+                                               "unbalanced / mean contact force {:.3g})",
+                                               sig, Real(steps) * dt, ratio));
         d.check_health(Real(steps) * dt);
         ratio = d.unbalanced_ratio();
     }

@@ -28,4 +28,11 @@ public:
     using RunStopped::RunStopped;
 };
 
+// A run that needs more memory than the budget allows (core/memory_budget.hpp), found before
+// the allocation that would exceed it. Exit code 2, as an allocation failure.
+class OutOfMemoryError : public RunStopped {
+public:
+    using RunStopped::RunStopped;
+};
+
 } // namespace debrisflow

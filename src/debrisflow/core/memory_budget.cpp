@@ -1,6 +1,7 @@
 #include "debrisflow/core/memory_budget.hpp"
 #include "debrisflow/core/error.hpp"
 #include <cmath>
+#include <cstdio>
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -23,6 +24,26 @@ double memory_budget_bytes() {
 
 void set_memory_budget_bytes(double bytes) {
     budget() = bytes;
+}
+
+double resident_bytes() {
+    std::FILE* f = std::fopen("/proc/self/statm", "r");
+    if (!f) return 0;
+    long size = 0, resident = 0;
+    const bool ok = std::fscanf(f, "%ld %ld", &size, &resident) == 2;
+    std::fclose(f);
+    const long page = sysconf(_SC_PAGE_SIZE);
+    return ok && page > 0 ? double(resident) * double(page) : 0;
+}
+
+void require_memory(double bytes, const std::string& what) {
+    const double held = resident_bytes(), budget = memory_budget_bytes();
+    if (!(held + bytes <= budget))
+        throw OutOfMemoryError(fmt::format(
+            "{} needs {} more, with {} already in use, beyond the memory budget of {} (the "
+            "machine's memory, or --max-memory); coarsen the case (dp) or run it on a larger "
+            "machine",
+            what, format_bytes(bytes), format_bytes(held), format_bytes(budget)));
 }
 
 std::string format_bytes(double bytes) {

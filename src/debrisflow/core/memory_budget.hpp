@@ -10,6 +10,14 @@ namespace debrisflow {
 double memory_budget_bytes();
 void set_memory_budget_bytes(double bytes);
 
+// The process's resident memory now (Linux: /proc/self/statm), 0 where it cannot be read.
+double resident_bytes();
+
+// Throws OutOfMemoryError, naming `what`, where allocating `bytes` more would take the process
+// beyond the budget (an overcommitting system would otherwise kill it when the pages are
+// touched, without a message).
+void require_memory(double bytes, const std::string& what);
+
 // "512 MiB", "3.2 GiB", "1.4e+03 TiB"
 std::string format_bytes(double bytes);
 
