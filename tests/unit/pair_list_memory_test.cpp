@@ -5,6 +5,8 @@
 // the machine's). Also checks that the list holds exactly the pairs within the radius
 // (boundary-boundary pairs left out, a fluid-fluid pair once), before and after the knot moves
 // into another block of rows and a block outgrows its region.
+#include "debrisflow/core/error.hpp"
+#include "debrisflow/core/memory_budget.hpp"
 #include "debrisflow/neighbors/cell_grid.hpp"
 #include "debrisflow/neighbors/pair_list.hpp"
 #include "debrisflow/particles/particle_set.hpp"
@@ -111,4 +113,28 @@ TEST(PairListMemory, EstimateCoversWhatTheSphPhaseHolds) {
         EXPECT_GT(held, 0);
         EXPECT_LE(held, estimated) << file;
     }
+}
+
+// A list that would take the process beyond the memory budget stops the run before it is
+// allocated (an overcommitting kernel would otherwise kill the process when its pages are
+// touched, without a message): here a budget of 64 KiB above what the process holds, against
+// a list of about 1 MB.
+TEST(PairListMemory, AListBeyondTheBudgetStopsBeforeItIsAllocated) {
+    auto s = fluid_with_knot({0.3, 0, 0.3});
+    struct Restore {
+        double budget = memory_budget_bytes();
+        ~Restore() { set_memory_budget_bytes(budget); }
+    } restore;
+    ASSERT_GT(resident_bytes(), 0) << "/proc/self/statm unreadable";
+    set_memory_budget_bytes(resident_bytes() + 64 * 1024);
+    neighbors::PairList list;
+    try {
+        build(list, s);
+        FAIL() << "a list beyond the budget was built";
+    } catch (const OutOfMemoryError& e) {
+        EXPECT_NE(std::string(e.what()).find("the SPH pair list"), std::string::npos) << e.what();
+    }
+    set_memory_budget_bytes(restore.budget);
+    build(list, s);
+    EXPECT_EQ(listed(list), brute_force(s));
 }
