@@ -12,8 +12,12 @@
 
 namespace debrisflow::dem {
 
-// Grain-grain candidates from the cell grid, each pair once (the partner's id not below the
-// grain's), members of one clump never paired; the key is the partner's persistent id.
+// Grain-grain candidates from the cell grid, each pair once, in the row of the smaller grain
+// (equal radii: of the lower id), members of one clump never paired; the key is the partner's
+// persistent id. A boulder's row holds only the grains at least as large as itself, not the
+// hundreds of fines around it: the slots' capacity per grain is the longest row's, so one
+// boulder's row would otherwise size every grain's (a boulder block listed before the fines
+// multiplied the memory of cases/papers/slit_dam_dem/typeB.toml by 4.5).
 struct GrainCandidates {
     neighbors::GridView grid;
     const Vec3* pos;
@@ -29,7 +33,7 @@ struct GrainCandidates {
         grid.for_each_neighbor(
             i, pos[i], p, p + 1, p + 2,
             [&](Index j, Vec3, Real r2) {
-                if (id[j] < idi) return;
+                if (radius[j] < ri || (radius[j] == ri && id[j] < idi)) return;
                 if (ci >= 0 && clump_of[id[j]] == ci) return; // members of one clump
                 const Real reach = ri + radius[j] + skin;
                 if (r2 < reach * reach) emit(j, id[j]);
