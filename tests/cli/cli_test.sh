@@ -109,7 +109,7 @@ grep -q "stopped on request (signal 15)" "$out/stopped.txt" || fail "stop messag
 grep -q '"status": "interrupted"' "$out/stopped/summary.json" || fail "interrupted summary"
 [ "$(wc -l < "$out/stopped/probes/sensor1.csv")" -ge 3 ] || fail "stopped run lost its probe rows"
 # The same while grains settle before the run (dem.settle, here set never to reach its ratio):
-# the stop comes within 200 settling steps, not at the end of dem.settle_max_time.
+# the stop comes at the end of the settling step, not at the end of dem.settle_max_time.
 "$exe" run "$src/cases/deposits/column_collapse2d.toml" --out "$out/settling" --threads 1 \
     --quiet --set dem.settle=true --set dem.settle_ratio=1e-12 --set dem.settle_max_time=1000 \
     > "$out/settling.txt" 2>&1 &

@@ -22,13 +22,14 @@ void Simulation::settle_grains() {
                 "grains did not settle within dem.settle_max_time = {} s (mean unbalanced / "
                 "mean contact force = {:.3g}, target {})",
                 spec_.dem.settle_max_time, ratio, spec_.dem.settle_ratio));
-        for (long k = 0; k < check_every; ++k) d.step(dt);
-        steps += check_every;
-        if (const int sig = stop_signal())
-            throw InterruptedError(fmt::format("stopped on request (signal {}) while settling the "
-                                               "grains, after {:.4g} s of settling (mean "
-                                               "unbalanced / mean contact force {:.3g})",
-                                               sig, Real(steps) * dt, ratio));
+        for (long k = 0; k < check_every; ++k, ++steps) {
+            if (const int sig = stop_signal()) // Ctrl-C or SIGTERM: before the next step
+                throw InterruptedError(fmt::format("stopped on request (signal {}) while settling "
+                                                   "the grains, after {:.4g} s of settling (mean "
+                                                   "unbalanced / mean contact force {:.3g})",
+                                                   sig, Real(steps) * dt, ratio));
+            d.step(dt);
+        }
         d.check_health(Real(steps) * dt);
         ratio = d.unbalanced_ratio();
     }
