@@ -50,9 +50,9 @@ Pairs listed(const neighbors::PairList& list) {
 }
 
 // Every pair within the radius with at least one fluid particle, by brute force.
-Pairs brute_force(const particles::ParticleSet& s) {
+Pairs brute_force(particles::ParticleSet& s) {
     Pairs out;
-    const particles::ParticleView v = const_cast<particles::ParticleSet&>(s).view();
+    const particles::ParticleView v = s.view();
     for (Index i = 0; i < s.size(); ++i)
         for (Index j = i + 1; j < s.size(); ++j) {
             if (!v.is_fluid(i) && !v.is_fluid(j)) continue;

@@ -112,8 +112,8 @@ double sph_bytes_per_particle(int dim, double support_over_dp, bool density_grad
     // particle and thread instead of the force pass's 4
     const double gradient =
         density_gradient ? 3 * sizeof(Real) + (dim == 3 ? 5 : 1) * sizeof(Real) * 2 : 0;
-    return 22 * sizeof(Real) + 1 + 2 + 8 + 13 * sizeof(Real) + 3 * 4 + list + 4 * sizeof(Real) * 2 +
-           gradient;
+    const double fields = (21 + 1) * sizeof(Real) + 1 + 2 + 8, solver = (7 + 6) * sizeof(Real);
+    return fields + solver + 3 * 4 + list + 4 * sizeof(Real) * 2 + gradient;
 }
 
 double bytes_per_grain(const io::CaseSpec& c) {
