@@ -61,3 +61,71 @@ TEST(DemSlotRows, APairLivesInTheSmallerGrainsRow) {
     // lattice cube within reach: 6 at 5.5 mm; the diagonals are beyond 5 + 2 mm) and the boulder.
     EXPECT_LE(slots.capacity(), 16);
 }
+
+namespace {
+
+// Slots of n grains of radius 1 mm (ids in order) at the given positions, search margin 1 mm.
+void build_slots(dem::ContactSlots& slots, const std::vector<Vec3>& pos) {
+    const Index n = Index(pos.size());
+    const Real skin = 0.001;
+    const std::vector<Real> radius(pos.size(), 0.001);
+    std::vector<std::uint32_t> id(pos.size());
+    for (std::size_t i = 0; i < id.size(); ++i) id[i] = std::uint32_t(i);
+    neighbors::CellGrid grid;
+    grid.configure({-0.01, -0.01, -0.01}, {0.1, 0.01, 0.01}, 0.003, 3, {false, false, false});
+    grid.build(&pos[0].x, &pos[0].x + 1, &pos[0].x + 2, n, 3);
+    slots.build(
+        n, dem::GrainCandidates{grid.view(), pos.data(), radius.data(), id.data(), nullptr, skin});
+}
+
+} // namespace
+
+// The capacity of every row follows the longest row of the last rebuild, down as well as up,
+// and the springs of the pairs that stay are carried into the narrower rows. Before, the
+// capacity only grew: one dense moment (a packing at the start, a jam) left every grain's row
+// that wide for the rest of the run, and the contact loop read the empty slots' stride.
+TEST(DemSlotRows, CapacityFollowsTheLongestRowDownAsWellAsUp) {
+    const int n = 30;
+    std::vector<Vec3> cluster, line;
+    for (int i = 0; i < n; ++i) {
+        cluster.push_back({0.00002 * i, 0, 0}); // every grain within reach of every other
+        line.push_back({0.0025 * i, 0, 0});     // each within reach of its next only (2.5 < 3 mm)
+    }
+    dem::ContactSlots slots;
+    build_slots(slots, cluster);
+    EXPECT_EQ(slots.count(0), n - 1);
+    ASSERT_GE(slots.capacity(), n - 1);
+    EXPECT_EQ(slots.capacity(), dem::slot_capacity_for(n - 1));
+
+    // Spread out: this build still has the cluster's stride, the next one the line's.
+    build_slots(slots, line);
+    for (Index i = 0; i + 1 < n; ++i) {
+        ASSERT_EQ(slots.count(i), 1);
+        const std::size_t s = std::size_t(i) * std::size_t(slots.capacity());
+        EXPECT_EQ(slots.partners()[s], i + 1);
+        slots.tangential()[s] = Vec3{Real(i), 1, 2}; // a spring that the next build must keep
+    }
+    build_slots(slots, line);
+    EXPECT_EQ(slots.capacity(), dem::slot_capacity_for(1)) << "the rows' stride shrinks";
+    for (Index i = 0; i + 1 < n; ++i) {
+        ASSERT_EQ(slots.count(i), 1);
+        const std::size_t s = std::size_t(i) * std::size_t(slots.capacity());
+        EXPECT_EQ(slots.partners()[s], i + 1);
+        EXPECT_EQ(slots.tangential()[s].x, Real(i)) << "grain " << i << "'s spring carried over";
+        EXPECT_EQ(slots.tangential()[s].z, Real(2));
+    }
+    EXPECT_EQ(slots.count(n - 1), 0);
+
+    // Back into the cluster: the narrow rows overflow and the build goes round again with room,
+    // keeping the springs of the pairs that remain.
+    build_slots(slots, cluster);
+    EXPECT_EQ(slots.count(0), n - 1);
+    EXPECT_EQ(slots.capacity(), dem::slot_capacity_for(n - 1));
+    const std::size_t row = std::size_t(3) * std::size_t(slots.capacity());
+    Index with4 = -1;
+    for (Index k = 0; k < slots.count(3); ++k)
+        if (slots.partners()[row + std::size_t(k)] == 4) with4 = k;
+    ASSERT_GE(with4, 0);
+    EXPECT_EQ(slots.tangential()[row + std::size_t(with4)].x, Real(3))
+        << "grain 3's spring with grain 4 kept through the regrowth";
+}

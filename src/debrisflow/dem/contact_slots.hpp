@@ -12,15 +12,24 @@ class Archive;
 namespace debrisflow::dem {
 
 // Per-grain contact candidates with their history, in fixed-capacity slots per grain:
-// grain i's slots are [i*capacity, i*capacity + count(i)). Each slot holds the partner's index
-// (a grain or a wall primitive), a persistent key (the partner grain's id or the primitive
+// grain i's slots are [i*capacity, i*capacity + count(i)). The capacity follows the longest
+// row of the last build (slot_capacity_for), down as well as up: a stride wider than the rows
+// are long only adds memory traffic to every step's contact loop. Each slot holds the partner's
+// index (a grain or a wall primitive), a persistent key (the partner grain's id or the primitive
 // index) and the contact history. Rebuilding keeps the history of every pair whose key
 // reappears, so tangential springs survive neighbour rebuilds; permute() moves the slots with
 // their grains, so they also survive reordering.
+// The capacity of every row after a build whose longest row held `longest`: a quarter more
+// and two, so that rows growing between rebuilds rarely send a build round a second time.
+DF_HD constexpr Index slot_capacity_for(Index longest) {
+    return longest + longest / 4 + 2;
+}
+
 class ContactSlots {
 public:
     // Rebuilds the slots: candidates(i, emit) calls emit(partner, key) for grain i's partners.
-    // Grows the capacity when a grain overflows it.
+    // Takes the capacity the last build's longest row asked for, and builds again with room
+    // when a grain overflows it.
     template <class Candidates> void build(Index n, const Candidates& candidates);
     void permute(const std::vector<Index>& perm);
     // General reindexing: new grain i takes old grain from[i]'s slots; from[i] < 0 is a new
@@ -50,7 +59,8 @@ public:
 private:
     // The resident loop (dem/resident_dem.hpp) copies the rows to and from its memory.
     template <class> friend class ResidentDem;
-    Index cap_ = 8;
+    Index cap_ = 0;      // the rows' stride now
+    Index next_cap_ = 2; // the next build's: slot_capacity_for(the last build's longest row)
     std::vector<Index> count_, partner_, old_count_;
     std::vector<std::uint32_t> key_, old_key_;
     bool rolling_ = false;
@@ -107,8 +117,8 @@ template <class Candidates> void ContactSlots::build(Index n, const Candidates& 
     old_mroll_.swap(mroll_);
     if (!had) old_count_.assign(std::size_t(n), 0);
     const bool had_rolling = old_mroll_.size() == old_xi_.size();
+    Index cap = next_cap_;
     for (;;) {
-        const Index cap = cap_;
         count_.assign(std::size_t(n), 0);
         partner_.resize(std::size_t(n) * std::size_t(cap));
         key_.resize(partner_.size());
@@ -127,8 +137,12 @@ template <class Candidates> void ContactSlots::build(Index n, const Candidates& 
                                            cap,
                                            old_cap};
         const Index worst = exec::max_of(n, Index(0), fill, exec::dynamic(256, 4097));
-        if (worst <= cap) return;
-        cap_ = worst + worst / 4 + 2; // history still in old_*: retry with room
+        if (worst <= cap) {
+            cap_ = cap;
+            next_cap_ = slot_capacity_for(worst);
+            return;
+        }
+        cap = slot_capacity_for(worst); // history still in old_*: retry with room
     }
 }
 

@@ -38,6 +38,7 @@ void ContactSlots::state(checkpoint::Archive& ar) {
         return;
     }
     ar(cap_, count_, partner_, key_, xi_, mroll_);
+    next_cap_ = std::max(cap_, Index(2)); // the rows' stride as saved, for the next build
     if (partner_.size() != count_.size() * std::size_t(cap_) || key_.size() != partner_.size() ||
         xi_.size() != partner_.size() || mroll_.size() != (rolling_ ? partner_.size() : 0))
         ar.fail("contact slots that do not match");

@@ -49,7 +49,8 @@ template <class Space> class ResidentDem final : public ResidentDemPhase {
     // One kind of contact slots (grain-grain or grain-wall) with the rows of the last rebuild
     // (old_*), which the next rebuild carries the history from (ContactSlots on the host).
     struct Slots {
-        Index cap = 8;
+        Index cap = 0;      // the rows' stride now
+        Index next_cap = 2; // the next build's (ContactSlots)
         Buffer<Index> count, partner, old_count;
         Buffer<std::uint32_t> key, old_key;
         Buffer<Vec3> xi, old_xi, mroll, old_mroll; // mroll empty without rolling memory

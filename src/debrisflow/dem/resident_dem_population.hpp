@@ -15,7 +15,7 @@ template <class Space> void ResidentDem<Space>::publish() {
     download_grains();
     down(hot_, host_.hot_);
     const auto down_slots = [&](const Slots& from, ContactSlots& to) {
-        to.cap_ = from.cap;
+        to.cap_ = from.cap, to.next_cap_ = from.next_cap;
         down(from.count, to.count_), down(from.partner, to.partner_);
         down(from.key, to.key_), down(from.xi, to.xi_), down(from.mroll, to.mroll_);
     };
@@ -167,7 +167,7 @@ template <class Space> void ResidentDem<Space>::upload_once() {
         Space::for_each(n_, LoadHot{view(), hot_.data()});
     }
     const auto up_slots = [&](Slots& to, const ContactSlots& from) {
-        to.cap = from.cap_;
+        to.cap = from.cap_, to.next_cap = from.next_cap_;
         up(to.count, from.count_), up(to.partner, from.partner_), up(to.key, from.key_);
         up(to.xi, from.xi_), up(to.mroll, from.mroll_);
     };

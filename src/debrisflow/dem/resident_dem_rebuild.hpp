@@ -117,8 +117,9 @@ void ResidentDem<Space>::build_slots(Slots& s, const Candidates& candidates) {
         Space::for_each(n_, FillWith<Index>{s.old_count.data(), 0});
     }
     const bool had_rolling = s.old_mroll.size() == s.old_xi.size() && s.old_xi.size() > 0;
+    Index cap = s.next_cap;
     for (;;) {
-        const Index cap = s.cap, slots = n_ * cap;
+        const Index slots = n_ * cap;
         s.count.resize(n_);
         s.partner.resize(slots);
         s.key.resize(slots);
@@ -137,8 +138,12 @@ void ResidentDem<Space>::build_slots(Slots& s, const Candidates& candidates) {
                                            cap,
                                            old_cap};
         const Index worst = Index(Space::max_of(n_, fill));
-        if (worst <= cap) return;
-        s.cap = worst + worst / 4 + 2; // history still in old_*: retry with room
+        if (worst <= cap) {
+            s.cap = cap;
+            s.next_cap = slot_capacity_for(worst);
+            return;
+        }
+        cap = slot_capacity_for(worst); // history still in old_*: retry with room
     }
 }
 
