@@ -11,6 +11,12 @@ class Archive;
 
 namespace debrisflow::dem {
 
+// The capacity of every row after a build whose longest row held `longest`: a quarter more
+// and two, so that rows growing between rebuilds rarely send a build round a second time.
+DF_HD constexpr Index slot_capacity_for(Index longest) {
+    return longest + longest / 4 + 2;
+}
+
 // Per-grain contact candidates with their history, in fixed-capacity slots per grain:
 // grain i's slots are [i*capacity, i*capacity + count(i)). The capacity follows the longest
 // row of the last build (slot_capacity_for), down as well as up: a stride wider than the rows
@@ -19,12 +25,6 @@ namespace debrisflow::dem {
 // index) and the contact history. Rebuilding keeps the history of every pair whose key
 // reappears, so tangential springs survive neighbour rebuilds; permute() moves the slots with
 // their grains, so they also survive reordering.
-// The capacity of every row after a build whose longest row held `longest`: a quarter more
-// and two, so that rows growing between rebuilds rarely send a build round a second time.
-DF_HD constexpr Index slot_capacity_for(Index longest) {
-    return longest + longest / 4 + 2;
-}
-
 class ContactSlots {
 public:
     // Rebuilds the slots: candidates(i, emit) calls emit(partner, key) for grain i's partners.
